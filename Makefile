@@ -1,0 +1,57 @@
+# Convenience wrapper: installs dependencies, configures through CMake presets, builds, runs.
+
+# `ci` (warnings as errors) when the CI environment variable is "true", `default` otherwise.
+PRESET ?= $(if $(filter true,$(CI)),ci,default)
+BUILD_DIR := build
+FUZZ_SECONDS ?= 600
+ROOT := 'RoverSystem()'
+FORMAT_DIRS := bipc tests bench
+
+.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench format clean
+
+all: build
+
+deps:
+	scripts/install-deps.sh
+
+build: deps
+	cmake --preset $(PRESET)
+	cmake --build --preset $(PRESET)
+
+demo: build
+	$(BUILD_DIR)/bin/bipc check models/rover_watchdog.bip --root $(ROOT)
+	$(BUILD_DIR)/bin/bipc dot models/rover_watchdog.bip --root $(ROOT) -o $(BUILD_DIR)/rover_watchdog.svg
+	@echo "The architecture picture is in $(BUILD_DIR)/rover_watchdog.svg"
+
+test: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -LE slow -j2
+	$(MAKE) fuzz-smoke
+
+test-slow: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -L slow -j2
+
+# Seeds are the tracked valid models; new inputs go to build-fuzz/corpus, never into the tree.
+FUZZ_SEEDS := tests/bipc/golden/valid models
+
+fuzz-build: deps
+	cmake --preset fuzz
+	cmake --build --preset fuzz --target bipc_fuzz
+
+# The short run that `make test` includes; `make fuzz` is the long one.
+fuzz-smoke: fuzz-build
+	mkdir -p build-fuzz/corpus
+	build-fuzz/bin/bipc_fuzz -max_total_time=60 -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+
+fuzz: fuzz-build
+	mkdir -p build-fuzz/corpus
+	build-fuzz/bin/bipc_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+
+bench: build
+	bench/frontend_scaling.sh $(BUILD_DIR)
+
+format:
+	find $(FORMAT_DIRS) \( -name '*.cpp' -o -name '*.h' \) -print0 2>/dev/null \
+	  | xargs -0 -r clang-format-14 -i
+
+clean:
+	rm -rf build build-asan build-fuzz

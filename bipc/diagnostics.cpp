@@ -1,0 +1,61 @@
+// Diagnostic collection and the `file:line:col: error: ...` rendering.
+#include "bipc/diagnostics.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace smcbip::bipc {
+
+std::uint32_t SourceFiles::add(const std::string& path) {
+  auto found = std::find(paths.begin(), paths.end(), path);
+  if (found != paths.end()) return static_cast<std::uint32_t>(found - paths.begin());
+  paths.push_back(path);
+  return static_cast<std::uint32_t>(paths.size() - 1);
+}
+
+void Diagnostics::error(Location at, std::string message) {
+  items_.push_back({Severity::Error, at, std::move(message)});
+  ++error_count_;
+}
+
+void Diagnostics::warning(Location at, std::string message) {
+  items_.push_back({Severity::Warning, at, std::move(message)});
+}
+
+void Diagnostics::note(Location at, std::string message) {
+  items_.push_back({Severity::Note, at, std::move(message)});
+}
+
+void Diagnostics::sort_by_location() {
+  std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.location.file, a.location.line, a.location.column) <
+           std::tie(b.location.file, b.location.line, b.location.column);
+  });
+}
+
+namespace {
+const char* severity_name(Severity severity) {
+  switch (severity) {
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
+  }
+  return "error";
+}
+}  // namespace
+
+std::string Diagnostics::format(const SourceFiles& files) const {
+  std::string out;
+  for (const Diagnostic& d : items_) {
+    const std::string& path =
+        d.location.file < files.paths.size() ? files.paths[d.location.file] : std::string("<input>");
+    out += path + ":" + std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
+           ": " + severity_name(d.severity) + ": " + d.message + "\n";
+  }
+  return out;
+}
+
+}  // namespace smcbip::bipc

@@ -1,0 +1,127 @@
+// bipc: check BIP2 models, draw their architecture, dump their IR.
+//
+// Exit codes: 0 success, 2 input or usage error, 3 internal error.
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "bipc/bipc.h"
+#include "bipc/ir/ir_dot.h"
+#include "bipc/ir/ir_json.h"
+#include "bipc/options.h"
+
+namespace {
+
+using namespace smcbip::bipc;
+
+constexpr int kOk = 0;
+constexpr int kInputError = 2;
+constexpr int kInternalError = 3;
+
+/// Prints the diagnostics of a run and tells whether it may go on.
+bool report(const FrontendResult& result) {
+  Diagnostics sorted = result.diags;
+  sorted.sort_by_location();
+  std::cerr << sorted.format(result.model.files);
+  return !result.diags.has_errors();
+}
+
+int run_check(const FrontendOptions& options) {
+  FrontendResult result = run_frontend(options, /*need_system=*/false);
+  return report(result) ? kOk : kInputError;
+}
+
+/// Writes `text` to `path` through a temporary file, so a failure leaves nothing half-written.
+bool write_file_atomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    if (!out.good()) {
+      std::remove(temporary.c_str());
+      return false;
+    }
+  }
+  return std::rename(temporary.c_str(), path.c_str()) == 0;
+}
+
+int run_dot(const FrontendOptions& options, const std::string& output) {
+  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  if (!report(result) || !result.system) return kInputError;
+  const std::string dot = ir::to_dot(*result.system);
+  if (output.empty() || output == "-") {
+    std::cout << dot;
+    return kOk;
+  }
+  std::string error;
+  if (!ir::render_svg(dot, output, error)) {
+    std::cerr << "bipc: error: " << error << "\n";
+    return kInputError;
+  }
+  return kOk;
+}
+
+int run_ir(const FrontendOptions& options, const std::string& output) {
+  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  if (!report(result) || !result.system) return kInputError;
+  const std::string json = ir::to_json(*result.system).dump(2) + "\n";
+  if (output.empty() || output == "-") {
+    std::cout << json;
+    return kOk;
+  }
+  if (!write_file_atomically(output, json)) {
+    std::cerr << "bipc: error: cannot write '" << output << "'\n";
+    return kInputError;
+  }
+  return kOk;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"bipc: the BIP2 front end of smcbip (check, draw, dump the IR)"};
+  app.require_subcommand(1);
+
+  FrontendOptions check_options;
+  CLI::App* check = app.add_subcommand("check", "check a model (and instantiate --root)");
+  register_frontend_options(*check, check_options);
+
+  FrontendOptions dot_options;
+  std::string dot_output;
+  CLI::App* dot = app.add_subcommand("dot", "draw the architecture of a root through Graphviz");
+  register_frontend_options(*dot, dot_options);
+  dot->add_option("-o,--output", dot_output, "picture file: .svg, .png, .pdf or .dot (- : stdout)");
+
+  FrontendOptions ir_options;
+  std::string ir_output;
+  bool json = false;
+  CLI::App* ir_cmd = app.add_subcommand("ir", "dump the IR of a root instantiation");
+  register_frontend_options(*ir_cmd, ir_options);
+  ir_cmd->add_flag("--json", json, "JSON dump (the only format so far)");
+  ir_cmd->add_option("-o,--output", ir_output, "output file (default: stdout)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kInputError;
+  }
+  if (check->parsed()) return run_check(check_options);
+  if (dot->parsed()) return run_dot(dot_options, dot_output);
+  return run_ir(ir_options, ir_output);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "bipc: internal error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "bipc: internal error\n";
+  }
+  return kInternalError;
+}

@@ -1,0 +1,25 @@
+// Replays saved fuzzer inputs (crashers that were fixed, and the seed corpus) as plain tests.
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "fuzz_frontend.h"
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::ifstream in(argv[i], std::ios::binary);
+    if (!in) {
+      std::cerr << "fuzz_replay: cannot open " << argv[i] << "\n";
+      return 1;
+    }
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+    smcbip::bipc::fuzz::run_frontend_on(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                        bytes.size());
+  }
+  std::cout << "replayed " << (argc - 1) << " inputs\n";
+  return 0;
+}
