@@ -263,6 +263,9 @@ struct ConnectorInstance {
   /// Per port parameter, the ports it may bind (more than one through merged exports).
   std::vector<std::vector<PortRef>> bound;
   Index bound_by = kNone;  // the connector whose port binds this one's export, if any
+  /// Every connector binding this one's export, in instance order (bound_by is the first). An
+  /// export may feed several connectors, as an atom port may (BIP2 language reference).
+  std::vector<Index> bound_by_all;
   std::vector<Annotation> annotations;
 };
 

@@ -60,6 +60,7 @@ struct ExprContext {
   const ast::ConnectorTypeDecl* connector = nullptr;
   const ast::InteractionDecl* interaction = nullptr;  // its ports are the readable ones
   const ast::CompoundTypeDecl* compound = nullptr;
+  const ast::ConstDataDecl* constant = nullptr;  // ConstInit: the constant being initialised
 };
 
 /// Types an expression, fills its resolved fields, reports errors; returns its type (Error kind
@@ -111,6 +112,11 @@ struct ComponentInterface {
   std::vector<DataEntry> data;
 };
 ComponentInterface interface_of(const ast::ComponentDecl& component, const Symbols& symbols);
+
+/// Whether instantiating a compound type never ends: it contains itself, directly or through
+/// other compound types, or contains a type that does (reported by check_compound_type).
+/// interface_of must not descend into such a type.
+bool instantiation_never_ends(const ast::CompoundTypeDecl& type, const Symbols& symbols);
 
 /// Whether `ports` (connector port parameter indices) is an interaction the define allows,
 /// computed on the tree without enumerating all interactions.
