@@ -15,6 +15,7 @@ models_dir="$build_dir/bench-models"
 sizes=(10 100 1000 10000)
 runs=3
 limit_seconds=1.0
+max_step_ratio=20
 
 for tool in "$bipc" "$generator"; do
   if [[ ! -x "$tool" ]]; then
@@ -69,6 +70,12 @@ for family in chain broadcast; do
       printf "%-10s %7d %10.4f %9.1f %12s %10.2f\n", f, n, s, m / 1024, r, s * 1e6 / n }'
     if ((n == 10000)) && awk -v s="$best" -v l="$limit_seconds" 'BEGIN { exit !(s >= l) }'; then
       echo "frontend_scaling: FAIL: $family with $n atoms took ${best}s (limit ${limit_seconds}s)" >&2
+      status=1
+    fi
+    # Linear growth means about 10x per step; start-up time dominates below 1000 atoms, so only
+    # the last step is judged, with room for timing noise.
+    if ((n == 10000)) && awk -v r="$ratio" -v l="$max_step_ratio" 'BEGIN { exit !(r >= l) }'; then
+      echo "frontend_scaling: FAIL: $family grows superlinearly: x${ratio} from 1000 to $n atoms" >&2
       status=1
     fi
     previous=$best

@@ -52,7 +52,9 @@ InstantiationGraph reachable_from(const ast::CompoundTypeDecl& start, const ast:
       g.containments.push_back({static_cast<int>(next), to, static_cast<int>(c)});
     }
   }
-  g.graph = Digraph(g.types.size());
+  // Vertices are added in place: assigning a fresh adjacency_list trips a GCC
+  // -Wmaybe-uninitialized false positive inside Boost's copy.
+  for (std::size_t v = 0; v < g.types.size(); ++v) boost::add_vertex(g.graph);
   for (const auto& edge : g.containments) boost::add_edge(edge.from, edge.to, g.graph);
   return g;
 }

@@ -1,6 +1,7 @@
 // A connector's define expression: checking its leaves, and deciding whether a set of ports is
 // one of the interactions it defines (language.rst, "Defined interactions").
 #include <algorithm>
+#include <string>
 #include <unordered_map>
 
 #include "bipc/check/detail/check_internal.h"
@@ -9,12 +10,25 @@ namespace smcbip::bipc::detail {
 
 namespace {
 
+using PortIndex = std::unordered_map<std::string, int>;
+
+/// Port parameter names to indices (the first of duplicates), built once: a broadcast connector
+/// may have thousands of ports, so a linear search per leaf would be quadratic.
+PortIndex index_ports(const ast::ConnectorTypeDecl& connector) {
+  PortIndex index;
+  for (std::size_t i = 0; i < connector.ports.size(); ++i) {
+    index.emplace(connector.ports[i].name.text, static_cast<int>(i));
+  }
+  return index;
+}
+
 void visit_leaves(std::vector<ast::PortExpr>& nodes, const ast::ConnectorTypeDecl& connector,
-                  std::vector<bool>& seen, Diagnostics& diags) {
+                  const PortIndex& port_index, std::vector<bool>& seen, Diagnostics& diags) {
   for (ast::PortExpr& node : nodes) {
-    visit_leaves(node.children, connector, seen, diags);
+    visit_leaves(node.children, connector, port_index, seen, diags);
     if (!node.port) continue;
-    node.port_index = index_of(connector.ports, node.port->text);
+    const auto found = port_index.find(node.port->text);
+    node.port_index = found == port_index.end() ? -1 : found->second;
     if (node.port_index < 0) {
       if (!node.port->text.empty()) {
         diags.error(node.port->loc, "unknown port '" + node.port->text +
@@ -75,7 +89,7 @@ bool allows_sequence(const std::vector<ast::PortExpr>& nodes, const std::vector<
 
 void check_define(ast::ConnectorTypeDecl& connector, Diagnostics& diags) {
   std::vector<bool> seen(connector.ports.size(), false);
-  visit_leaves(connector.define, connector, seen, diags);
+  visit_leaves(connector.define, connector, index_ports(connector), seen, diags);
   if (connector.define.empty()) return;  // missing define: a syntax error, reported by the parser
   for (std::size_t i = 0; i < connector.ports.size(); ++i) {
     if (seen[i] || connector.ports[i].name.text.empty()) continue;
