@@ -300,6 +300,7 @@ struct InteractionDecl {
   std::vector<Ident> ports;
   ExprPtr guard;  // optional
   bool has_up = false, has_down = false;
+  Location up_loc, down_loc;  // the `up` and `down` keywords
   Block up, down;
   Annotations annotations;
   Location loc;

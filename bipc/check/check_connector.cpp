@@ -134,7 +134,7 @@ void check_actions(ast::InteractionDecl& interaction, const ast::ConnectorTypeDe
   }
   // An empty `up {}` computes nothing, so it is harmless (the Verimag compiler only warns).
   if (interaction.has_up && !interaction.up.empty() && !connector.export_port) {
-    diags.error(interaction.loc, "'up' needs an exported port: connector type '" +
+    diags.error(interaction.up_loc, "'up' needs an exported port: connector type '" +
                                      connector.name.text + "' exports none");
   }
   ctx.where = Where::ConnectorUp;

@@ -115,11 +115,13 @@ ast::InteractionDecl Parser::parse_interaction(ast::Annotations annotations) {
   while (at_name() && !at_action()) interaction.ports.push_back(ident_of(take()));
   if (interaction.ports.empty()) fail("a port name after 'on'");
   if (accept(TokenKind::KwProvided)) interaction.guard = parse_parenthesized_guard("provided");
-  if (accept(TokenKind::KwUp)) {
+  if (at(TokenKind::KwUp)) {
+    interaction.up_loc = take().loc;
     interaction.has_up = true;
     interaction.up = parse_block("after 'up'");
   }
-  if (accept(TokenKind::KwDown)) {
+  if (at(TokenKind::KwDown)) {
+    interaction.down_loc = take().loc;
     interaction.has_down = true;
     interaction.down = parse_block("after 'down'");
   }

@@ -16,7 +16,8 @@ using lower_test::lower_ok;
 using Texts = std::vector<std::string>;
 
 /// An atom type `A` with the given declarations and transitions, instantiated once as `a`.
-std::unique_ptr<lower_test::Lowered> lower_atom(const std::string& externs, const std::string& body) {
+std::unique_ptr<lower_test::Lowered> lower_atom(const std::string& externs,
+                                                const std::string& body) {
   return lower_ok("package t\n" + externs +
                       "  port type P()\n"
                       "  atom type A(int k)\n" +
@@ -73,8 +74,8 @@ TEST(LowerCode, IntOperandsAreConvertedWhereFloatIsExpected) {
   const ir::System& s = *lowered->system;
   const ir::AtomType& a = atom_type_of(s, "a");
   EXPECT_EQ(code_text(a.initial_action, s),
-            (Texts{"load atom.data[0]", "push.int 1", "add.int", "int_to_float", "store atom.data[1]",
-                   "push.float 2", "store atom.data[1]"}));
+            (Texts{"load atom.data[0]", "push.int 1", "add.int", "int_to_float",
+                   "store atom.data[1]", "push.float 2", "store atom.data[1]"}));
   EXPECT_EQ(code_text(a.transitions[0].guard, s),
             (Texts{"load atom.data[0]", "int_to_float", "load atom.data[1]", "lt.float"}));
   EXPECT_EQ(code_text(a.transitions[0].action, s),
@@ -110,11 +111,11 @@ TEST(LowerCode, IfThenElseAndDiscardedCallResults) {
                             "    }\n");
   ASSERT_TRUE(lowered->system);
   const ir::System& s = *lowered->system;
-  EXPECT_EQ(code_text(atom_type_of(s, "a").transitions.at(0).action, s),
-            (Texts{"load atom.data[0]", "push.int 0", "gt.int", "jump_if_false 10",
-                   "load atom.data[0]", "call bump/1", "pop", "push.string \"hi\"", "call note/1",
-                   "jump 13", "push.int 1", "call bump/1", "store atom.data[0]",
-                   "push.string \"hi\"", "call note/1"}));
+  EXPECT_EQ(
+      code_text(atom_type_of(s, "a").transitions.at(0).action, s),
+      (Texts{"load atom.data[0]", "push.int 0", "gt.int", "jump_if_false 10", "load atom.data[0]",
+             "call bump/1", "pop", "push.string \"hi\"", "call note/1", "jump 13", "push.int 1",
+             "call bump/1", "store atom.data[0]", "push.string \"hi\"", "call note/1"}));
   EXPECT_EQ(s.strings, (std::vector<std::string>{"hi"}));  // pooled once
   ASSERT_EQ(s.functions.size(), 2u);
   EXPECT_EQ(s.functions[0].name, "bump");
@@ -208,9 +209,8 @@ TEST(LowerCode, ConnectorTransferCodeUsesPortParameters) {
             (Texts{"load port[0].param[0]", "load port[1].param[0]", "ne.int"}));
   EXPECT_EQ(code_text(i.up, s), (Texts{"load port[0].param[0]", "load port[1].param[0]",
                                        "call min/2", "store connector.data[0]"}));
-  EXPECT_EQ(code_text(i.down, s),
-            (Texts{"load connector.data[0]", "store port[0].param[0]", "load connector.data[0]",
-                   "store port[1].param[0]"}));
+  EXPECT_EQ(code_text(i.down, s), (Texts{"load connector.data[0]", "store port[0].param[0]",
+                                         "load connector.data[0]", "store port[1].param[0]"}));
   EXPECT_EQ(sel.export_data, (std::vector<ir::Index>{0}));
   EXPECT_EQ(s.compounds[0].exported_ports.at("out"),
             (std::vector<ir::PortRef>{{ir::PortRef::Kind::Connector, 0, 0}}));

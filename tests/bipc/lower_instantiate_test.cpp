@@ -87,7 +87,8 @@ TEST(LowerInstantiate, MergedAtomExportBindsEveryMergedPort) {
   const ir::System& s = *lowered->system;
   const ir::ConnectorInstance& r = s.connectors.at(connector_index(s, "r"));
   ASSERT_EQ(r.bound.size(), 2u);
-  EXPECT_EQ(r.bound[0], (std::vector<ir::PortRef>{atom_port(s, "x", "m1"), atom_port(s, "x", "m2")}));
+  EXPECT_EQ(r.bound[0],
+            (std::vector<ir::PortRef>{atom_port(s, "x", "m1"), atom_port(s, "x", "m2")}));
   EXPECT_EQ(r.bound[1], (std::vector<ir::PortRef>{atom_port(s, "y", "p")}));
   const ir::AtomType& a = s.atom_types[0];
   ASSERT_EQ(a.interface.size(), 3u);
@@ -120,7 +121,8 @@ TEST(LowerInstantiate, CompoundExportsResolveDownToAtomPorts) {
   const ir::CompoundInstance& c = s.compounds.at(2);
   EXPECT_EQ(c.path, "o.c");
   ASSERT_EQ(c.exported_data.count("yy"), 1u);
-  EXPECT_EQ(c.exported_data.at("yy"), (std::pair<ir::Index, ir::Index>{atom_index(s, "o.c.a2"), 1u}));
+  EXPECT_EQ(c.exported_data.at("yy"),
+            (std::pair<ir::Index, ir::Index>{atom_index(s, "o.c.a2"), 1u}));
   EXPECT_EQ(c.exported_ports.at("xport").size(), 4u);
 }
 
@@ -218,9 +220,11 @@ TEST(LowerInstantiate, CompoundPrioritiesResolvePatternsAndGuards) {
   EXPECT_TRUE(one.low.all_ports);
   EXPECT_EQ(one.high.connector, connector_index(s, "c2"));
   EXPECT_FALSE(one.high.all_ports);
-  EXPECT_EQ(one.high.ports, (std::vector<ir::PortRef>{atom_port(s, "a", "q"), atom_port(s, "b", "q")}));
+  EXPECT_EQ(one.high.ports,
+            (std::vector<ir::PortRef>{atom_port(s, "a", "q"), atom_port(s, "b", "q")}));
   // `a.y` reads slot 1 of atom a; the compound parameter is folded to its value.
-  const std::string load_y = "load instance[" + std::to_string(atom_index(s, "a")) + "].data[1] ; a.y";
+  const std::string load_y =
+      "load instance[" + std::to_string(atom_index(s, "a")) + "].data[1] ; a.y";
   EXPECT_EQ(lower_test::code_text(one.guard, s),
             (std::vector<std::string>{load_y, "push.int 4", "lt.int"}));
   const ir::Priority& two = priorities[1];

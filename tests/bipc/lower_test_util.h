@@ -23,8 +23,9 @@ struct Lowered {
 
   std::string messages() const { return diags.format(model.files); }
   bool has_message(const std::string& part) const {
-    return std::any_of(diags.all().begin(), diags.all().end(),
-                       [&](const Diagnostic& d) { return d.message.find(part) != std::string::npos; });
+    return std::any_of(diags.all().begin(), diags.all().end(), [&](const Diagnostic& d) {
+      return d.message.find(part) != std::string::npos;
+    });
   }
 };
 
