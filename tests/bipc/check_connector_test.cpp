@@ -170,7 +170,7 @@ TEST(CheckConnector, UpNeedsAnExportedPortAndExportedDataNeedsUp) {
       "    define a b\n"
       "    on a b down { b.v = 1; }\n"
       "  end\nend\n");
-  EXPECT_TRUE(c.has(6, 5, "'up' needs an exported port")) << c.text();
+  EXPECT_TRUE(c.has(6, 12, "'up' needs an exported port")) << c.text();
   EXPECT_TRUE(c.has(10, 19, "exported port 'ep' binds data but no interaction computes it in 'up'"))
       << c.text();
 }
