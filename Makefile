@@ -40,11 +40,11 @@ fuzz-build: deps
 # The short run that `make test` includes; `make fuzz` is the long one.
 fuzz-smoke: fuzz-build
 	mkdir -p build-fuzz/corpus
-	build-fuzz/bin/bipc_fuzz -max_total_time=60 -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+	build-fuzz/bin/bipc_fuzz -dict=tests/bipc/fuzz/bip.dict -max_total_time=60 -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
 
 fuzz: fuzz-build
 	mkdir -p build-fuzz/corpus
-	build-fuzz/bin/bipc_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+	build-fuzz/bin/bipc_fuzz -dict=tests/bipc/fuzz/bip.dict -max_total_time=$(FUZZ_SECONDS) -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
 
 bench: build
 	bench/frontend_scaling.sh $(BUILD_DIR)
