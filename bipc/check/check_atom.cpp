@@ -9,11 +9,6 @@ namespace {
 using Kind = ast::ValueType::Kind;
 using Where = ExprContext::Where;
 
-bool native_kind(const ast::ValueType& type) {
-  return type.kind == Kind::Bool || type.kind == Kind::Int || type.kind == Kind::Float ||
-         type.kind == Kind::String;
-}
-
 /// Parameters, data, ports (with merged export names) and clocks share one namespace.
 void declare_names(const ast::AtomTypeDecl& atom, Diagnostics& diags) {
   std::vector<const ast::Ident*> names;
@@ -42,32 +37,8 @@ void declare_names(const ast::AtomTypeDecl& atom, Diagnostics& diags) {
 void check_params(ast::AtomTypeDecl& atom, const ast::Package& package, const Symbols& symbols,
                   Diagnostics& diags) {
   for (ast::ParamDecl& param : atom.params) {
-    const ast::ValueType type = resolve_type(param.type, package, symbols, diags);
-    if (type.kind != Kind::Error && !native_kind(type)) {
-      diags.error(param.type.name.loc(), "parameter '" + param.name.text +
-                                             "' must have a native type (bool, int, float or "
-                                             "string), not " +
-                                             type_name(type));
-    }
-  }
-}
-
-void check_data(ast::AtomTypeDecl& atom, const ExprContext& ctx, const Symbols& symbols,
-                Diagnostics& diags) {
-  for (ast::DataDecl& data : atom.data) resolve_type(data.type, *ctx.package, symbols, diags);
-  for (ast::DataDecl& data : atom.data) {
-    if (!data.initial_value) {
-      if (data.type.is_const) {
-        diags.error(data.name.loc, "constant data '" + data.name.text + "' must be initialised");
-      }
-      continue;
-    }
-    const ast::ValueType value = check_expression(*data.initial_value, ctx, symbols, diags);
-    if (!assignable(value, data.type.resolved)) {
-      diags.error(start_of(*data.initial_value),
-                  "type mismatch: cannot assign " + type_name(value) + " to " +
-                      type_name(data.type.resolved) + " '" + data.name.text + "'");
-    }
+    resolve_type(param.type, package, symbols, diags);
+    require_native_type(param.type, "parameter '" + param.name.text + "'", diags);
   }
 }
 
@@ -88,31 +59,14 @@ int bind_data(const ast::PortDecl& port, const ast::Ident& bound, std::size_t k,
     }
     return -1;
   }
-  if (port.port_type != nullptr && k < port.port_type->params.size()) {
-    const ast::ValueType& expected = port.port_type->params[k].type.resolved;
-    const ast::ValueType& actual = atom.data[d].type.resolved;
-    if (expected.kind != Kind::Error && actual.kind != Kind::Error && !(expected == actual)) {
-      diags.error(bound.loc, "type mismatch: port '" + port.name.text + "' binds '" + bound.text +
-                                 "' of type " + type_name(actual) + " to parameter '" +
-                                 port.port_type->params[k].name.text + "' of type " +
-                                 type_name(expected) + ": the types must be equal");
-    }
-  }
+  check_bound_type("port", port.name, port.port_type, k, bound, atom.data[d].type.resolved, diags);
   return d;
 }
 
 void check_port(ast::PortDecl& port, const ast::AtomTypeDecl& atom, const ast::Package& package,
                 const Symbols& symbols, Diagnostics& diags) {
-  port.port_type = symbols.port_type(package, port.type);
-  if (port.port_type == nullptr && !port.type.parts.empty()) {
-    diags.error(port.type.loc(), "unknown port type '" + port.type.text() + "'");
-  }
-  if (port.port_type != nullptr && port.bound_data.size() != port.port_type->params.size()) {
-    diags.error(port.name.loc, "wrong number of arguments: port '" + port.name.text +
-                                   "' of type '" + port.type.text() + "' expects " +
-                                   std::to_string(port.port_type->params.size()) + " data, got " +
-                                   std::to_string(port.bound_data.size()));
-  }
+  port.port_type = resolve_port_type(port.type, package, symbols, diags);
+  check_bound_count("port", port.name, port.type, port.port_type, port.bound_data.size(), diags);
   port.bound_data_index.clear();
   for (std::size_t k = 0; k < port.bound_data.size(); ++k) {
     port.bound_data_index.push_back(bind_data(port, port.bound_data[k], k, atom, diags));
@@ -205,7 +159,7 @@ void check_atom_type(ast::AtomTypeDecl& type, const ast::Package& package, const
   ctx.where = Where::AtomInit;
   ctx.package = &package;
   ctx.atom = &type;
-  check_data(type, ctx, symbols, diags);
+  check_data_declarations(type.data, ctx, symbols, diags);
   for (ast::PortDecl& port : type.ports) check_port(port, type, package, symbols, diags);
   check_initial(type, ctx, symbols, diags);
   for (ast::Transition& t : type.transitions) check_transition(t, type, ctx, symbols, diags);

@@ -1,7 +1,9 @@
 // Checks of compound priorities: the interactions they name, their guards, and the cycles they
 // form with each other and with maximal progress (after the Verimag compiler's priority graph).
 #include <algorithm>
+#include <map>
 #include <set>
+#include <unordered_map>
 
 #include "bipc/check/detail/check_compound.h"
 
@@ -182,20 +184,58 @@ bool chains(const CompoundScope& scope, int top_level_count, const Rule& from, c
   return included_in(from.high, to.low);
 }
 
+/// The rules a rule may chain to: those whose low side is on the connector of its high side,
+/// and those whose low side is `*:*`; every rule when its own high side is `*:*`. Indexing keeps
+/// the graph near linear for the usual explicit rules instead of testing every pair.
+class ChainCandidates {
+ public:
+  explicit ChainCandidates(const std::vector<std::size_t>& usable, const std::vector<Rule>& rules)
+      : usable_(usable) {
+    for (std::size_t r : usable) {
+      if (rules[r].low.wildcard) {
+        wildcard_low_.push_back(r);
+      } else {
+        by_low_connector_[rules[r].low.connector].push_back(r);
+      }
+    }
+  }
+
+  template <typename Visit>
+  void for_each(const Rule& from, Visit visit) const {
+    if (from.high.wildcard) {
+      for (std::size_t r : usable_) visit(r);
+      return;
+    }
+    if (auto found = by_low_connector_.find(from.high.connector);
+        found != by_low_connector_.end()) {
+      for (std::size_t r : found->second) visit(r);
+    }
+    for (std::size_t r : wildcard_low_) visit(r);
+  }
+
+ private:
+  const std::vector<std::size_t>& usable_;
+  std::vector<std::size_t> wildcard_low_;
+  std::unordered_map<int, std::vector<std::size_t>> by_low_connector_;
+};
+
 Digraph rule_graph(const CompoundScope& scope, const std::vector<Rule>& rules, bool guarded_too) {
   Digraph graph(rules.size());
   int top_level_count = 0;
   for (std::size_t k = 0; k < scope.type.connectors.size(); ++k) {
     if (is_top_level(scope, static_cast<int>(k))) ++top_level_count;
   }
-  auto usable = [&](const Rule& r) { return r.in_graph && (guarded_too || !r.guarded); };
-  for (std::size_t a = 0; a < rules.size(); ++a) {
-    for (std::size_t b = 0; b < rules.size(); ++b) {
-      if (a != b && usable(rules[a]) && usable(rules[b]) &&
-          chains(scope, top_level_count, rules[a], rules[b])) {
+  std::vector<std::size_t> usable;
+  for (std::size_t r = 0; r < rules.size(); ++r) {
+    if (rules[r].in_graph && (guarded_too || !rules[r].guarded)) usable.push_back(r);
+  }
+  const ChainCandidates candidates(usable, rules);
+  for (std::size_t a : usable) {
+    candidates.for_each(rules[a], [&](std::size_t b) {
+      if (a != b && chains(scope, top_level_count, rules[a], rules[b])) {
         boost::add_edge(a, b, graph);
       }
-    }
+    });
   }
   return graph;
 }
@@ -215,17 +255,19 @@ std::set<int> report_cycles(CompoundScope& scope, const Digraph& graph,
                             const std::set<int>& already, bool as_error) {
   const std::vector<bool> cyclic = on_long_cycle(graph);
   const std::vector<int> component = strong_component_of(graph);
-  std::set<int> done_components, rules_reported;
+  std::map<int, std::vector<int>> members;  // cyclic component -> its rules
   for (std::size_t r = 0; r < cyclic.size(); ++r) {
-    if (!cyclic[r] || done_components.count(component[r])) continue;
-    done_components.insert(component[r]);
+    if (cyclic[r]) members[component[r]].push_back(static_cast<int>(r));
+  }
+  std::set<int> rules_reported;
+  for (const auto& [unused, rules] : members) {
     bool overlaps = false;
-    for (std::size_t s = 0; s < cyclic.size(); ++s) {
-      if (component[s] != component[r]) continue;
-      rules_reported.insert(static_cast<int>(s));
-      overlaps = overlaps || already.count(static_cast<int>(s)) > 0;
+    for (int s : rules) {
+      rules_reported.insert(s);
+      overlaps = overlaps || already.count(s) > 0;
     }
     if (overlaps) continue;
+    const int r = rules.front();
     const std::string cycle = describe_cycle(scope, shortest_cycle_through(graph, r));
     const Location at = scope.type.priorities[r].name.loc;
     if (as_error) {

@@ -23,29 +23,7 @@ void declare_names(const ast::ConnectorTypeDecl& connector, Diagnostics& diags) 
 void check_port_params(ast::ConnectorTypeDecl& connector, const ast::Package& package,
                        const Symbols& symbols, Diagnostics& diags) {
   for (ast::ConnectorTypeDecl::PortParam& port : connector.ports) {
-    port.port_type = symbols.port_type(package, port.type);
-    if (port.port_type == nullptr && !port.type.parts.empty()) {
-      diags.error(port.type.loc(), "unknown port type '" + port.type.text() + "'");
-    }
-  }
-}
-
-void check_data(ast::ConnectorTypeDecl& connector, const ExprContext& ctx, const Symbols& symbols,
-                Diagnostics& diags) {
-  for (ast::DataDecl& data : connector.data) resolve_type(data.type, *ctx.package, symbols, diags);
-  for (ast::DataDecl& data : connector.data) {
-    if (!data.initial_value) {
-      if (data.type.is_const) {
-        diags.error(data.name.loc, "constant data '" + data.name.text + "' must be initialised");
-      }
-      continue;
-    }
-    const ast::ValueType value = check_expression(*data.initial_value, ctx, symbols, diags);
-    if (!assignable(value, data.type.resolved)) {
-      diags.error(start_of(*data.initial_value),
-                  "type mismatch: cannot assign " + type_name(value) + " to " +
-                      type_name(data.type.resolved) + " '" + data.name.text + "'");
-    }
+    port.port_type = resolve_port_type(port.type, package, symbols, diags);
   }
 }
 
@@ -54,16 +32,9 @@ void check_export_port(ast::ConnectorTypeDecl& connector, const ast::Package& pa
                        const Symbols& symbols, Diagnostics& diags) {
   if (!connector.export_port) return;
   ast::ConnectorExportPort& port = *connector.export_port;
-  port.port_type = symbols.port_type(package, port.type);
-  if (port.port_type == nullptr && !port.type.parts.empty()) {
-    diags.error(port.type.loc(), "unknown port type '" + port.type.text() + "'");
-  }
-  if (port.port_type != nullptr && port.bound_data.size() != port.port_type->params.size()) {
-    diags.error(port.name.loc, "wrong number of arguments: exported port '" + port.name.text +
-                                   "' of type '" + port.type.text() + "' expects " +
-                                   std::to_string(port.port_type->params.size()) + " data, got " +
-                                   std::to_string(port.bound_data.size()));
-  }
+  port.port_type = resolve_port_type(port.type, package, symbols, diags);
+  check_bound_count("exported port", port.name, port.type, port.port_type, port.bound_data.size(),
+                    diags);
   port.bound_data_index.clear();
   for (std::size_t k = 0; k < port.bound_data.size(); ++k) {
     const ast::Ident& bound = port.bound_data[k];
@@ -76,15 +47,8 @@ void check_export_port(ast::ConnectorTypeDecl& connector, const ast::Package& pa
                                  port.name.text + "'");
       continue;
     }
-    if (port.port_type == nullptr || k >= port.port_type->params.size()) continue;
-    const ast::ValueType& expected = port.port_type->params[k].type.resolved;
-    const ast::ValueType& actual = connector.data[d].type.resolved;
-    if (expected.kind != Kind::Error && actual.kind != Kind::Error && !(expected == actual)) {
-      diags.error(bound.loc, "type mismatch: exported port '" + port.name.text + "' binds '" +
-                                 bound.text + "' of type " + type_name(actual) + " to parameter '" +
-                                 port.port_type->params[k].name.text + "' of type " +
-                                 type_name(expected) + ": the types must be equal");
-    }
+    check_bound_type("exported port", port.name, port.port_type, k, bound,
+                     connector.data[d].type.resolved, diags);
   }
 }
 
@@ -135,7 +99,7 @@ void check_actions(ast::InteractionDecl& interaction, const ast::ConnectorTypeDe
   // An empty `up {}` computes nothing, so it is harmless (the Verimag compiler only warns).
   if (interaction.has_up && !interaction.up.empty() && !connector.export_port) {
     diags.error(interaction.up_loc, "'up' needs an exported port: connector type '" +
-                                     connector.name.text + "' exports none");
+                                        connector.name.text + "' exports none");
   }
   ctx.where = Where::ConnectorUp;
   check_block(interaction.up, ctx, symbols, diags);
@@ -187,7 +151,7 @@ void check_connector_type(ast::ConnectorTypeDecl& type, const ast::Package& pack
   ctx.where = Where::ConnectorUp;  // data initial values: constants and connector data
   ctx.package = &package;
   ctx.connector = &type;
-  check_data(type, ctx, symbols, diags);
+  check_data_declarations(type.data, ctx, symbols, diags);
   check_export_port(type, package, symbols, diags);
   check_define(type, diags);
   check_interactions(type, ctx, symbols, diags);

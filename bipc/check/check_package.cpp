@@ -11,19 +11,10 @@ namespace {
 
 using Kind = ast::ValueType::Kind;
 
-bool native_kind(const ast::ValueType& type) {
-  return type.kind == Kind::Bool || type.kind == Kind::Int || type.kind == Kind::Float ||
-         type.kind == Kind::String;
-}
-
 void check_constant(ast::ConstDataDecl& constant, ast::Package& package, const Symbols& symbols,
                     Diagnostics& diags) {
-  const ast::ValueType type = resolve_type(constant.type, package, symbols, diags);
-  if (type.kind != Kind::Error && !native_kind(type)) {
-    diags.error(constant.type.name.loc(), "constant '" + constant.name.text +
-                                              "' must have a native type (bool, int, float or "
-                                              "string), not " +
-                                              type_name(type));
+  resolve_type(constant.type, package, symbols, diags);
+  if (!require_native_type(constant.type, "constant '" + constant.name.text + "'", diags)) {
     constant.type.resolved = {};
   }
   if (!constant.value) {

@@ -14,15 +14,6 @@ using ast::UnaryOp;
 
 ast::ValueType native(Kind kind) { return ast::ValueType{kind, nullptr}; }
 
-bool numeric(const ast::ValueType& type) {
-  return type.kind == Kind::Int || type.kind == Kind::Float;
-}
-
-bool native_kind(const ast::ValueType& type) {
-  return type.kind == Kind::Bool || type.kind == Kind::Int || type.kind == Kind::Float ||
-         type.kind == Kind::String;
-}
-
 const char* symbol(UnaryOp op) {
   switch (op) {
     case UnaryOp::Minus:
@@ -47,7 +38,7 @@ std::optional<ast::ValueType> native_unary(UnaryOp op, const ast::ValueType& ope
   switch (op) {
     case UnaryOp::Minus:
     case UnaryOp::Plus:
-      if (numeric(operand)) return operand;
+      if (is_numeric(operand)) return operand;
       break;
     case UnaryOp::Not:
       if (operand.kind == Kind::Bool) return operand;
@@ -82,12 +73,12 @@ std::optional<ast::ValueType> native_binary(BinaryOp op, const ast::ValueType& l
     case BinaryOp::Sub:
     case BinaryOp::Mul:
     case BinaryOp::Div:
-      if (numeric(l) && numeric(r)) {
+      if (is_numeric(l) && is_numeric(r)) {
         return native(l.kind == Kind::Int && r.kind == Kind::Int ? Kind::Int : Kind::Float);
       }
       break;
     default:  // comparisons: the same native type, or int and float mixed
-      if ((numeric(l) && numeric(r)) || (native_kind(l) && l == r)) return native(Kind::Bool);
+      if ((is_numeric(l) && is_numeric(r)) || (is_native(l) && l == r)) return native(Kind::Bool);
       break;
   }
   return std::nullopt;

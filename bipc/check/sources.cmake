@@ -8,6 +8,7 @@ list(APPEND BIPC_SOURCES
   check/clock_constraints.cpp
   check/calls.cpp
   check/statements.cpp
+  check/declarations.cpp
   check/check_package.cpp
   check/check_atom.cpp
   check/atom_priorities.cpp

@@ -9,10 +9,6 @@ namespace {
 using Kind = ast::ValueType::Kind;
 using Where = ExprContext::Where;
 
-bool numeric(const ast::ValueType& type) {
-  return type.kind == Kind::Int || type.kind == Kind::Float;
-}
-
 bool in_atom_action(const ExprContext& ctx) {
   return ctx.where == Where::AtomAction || ctx.where == Where::AtomInit;
 }
@@ -21,7 +17,7 @@ bool in_atom_action(const ExprContext& ctx) {
 void check_clock_value(ast::Expr& value, const ExprContext& ctx, const Symbols& symbols,
                        Diagnostics& diags, const std::string& what) {
   const ast::ValueType type = check_expression(value, ctx, symbols, diags);
-  if (type.kind != Kind::Error && !numeric(type)) {
+  if (type.kind != Kind::Error && !is_numeric(type)) {
     diags.error(start_of(value),
                 what + " must be an int or float expression, got " + type_name(type));
   }

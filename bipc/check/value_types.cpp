@@ -65,6 +65,17 @@ ast::ValueType resolve_type(ast::TypeRef& type, const ast::Package& package, con
   return resolved;
 }
 
+bool is_native(const ast::ValueType& type) {
+  using Kind = ast::ValueType::Kind;
+  return type.kind == Kind::Bool || type.kind == Kind::Int || type.kind == Kind::Float ||
+         type.kind == Kind::String;
+}
+
+bool is_numeric(const ast::ValueType& type) {
+  using Kind = ast::ValueType::Kind;
+  return type.kind == Kind::Int || type.kind == Kind::Float;
+}
+
 std::string type_name(const ast::ValueType& type) {
   using Kind = ast::ValueType::Kind;
   switch (type.kind) {

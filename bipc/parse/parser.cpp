@@ -177,6 +177,15 @@ std::vector<ast::Ident> Parser::parse_name_list(std::string_view what) {
   return names;
 }
 
+/// `(x, y)` after the name of a port (of an atom, or exported by a connector): the data it binds.
+std::vector<ast::Ident> Parser::parse_bound_data(const ast::Ident& port) {
+  expect(TokenKind::LParen, "after port name '" + port.text + "'");
+  if (accept(TokenKind::RParen)) return {};
+  std::vector<ast::Ident> bound = parse_name_list("a data name");
+  expect(TokenKind::RParen, "to close the data bound to port '" + port.text + "'");
+  return bound;
+}
+
 ast::ExprPtr Parser::parse_parenthesized_guard(std::string_view after) {
   expect(TokenKind::LParen, concat({"after '", after, "'"}));
   ast::ExprPtr guard = parse_expression();

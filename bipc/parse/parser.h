@@ -87,6 +87,7 @@ class Parser {
   ast::Annotations parse_annotations();
   std::vector<ast::ParamDecl> parse_data_params(std::string_view owner);
   std::vector<ast::Ident> parse_name_list(std::string_view what);
+  std::vector<ast::Ident> parse_bound_data(const ast::Ident& port);
   ast::ExprPtr parse_parenthesized_guard(std::string_view after);
 
   // ---- error recovery (parser.cpp)

@@ -145,11 +145,7 @@ void Parser::parse_port_declaration(ast::AtomTypeDecl& atom, ast::Annotations an
     port.exported = exported;
     port.is_extern = is_extern;
     port.annotations = annotations;
-    expect(TokenKind::LParen, "after port name '" + port.name.text + "'");
-    if (!accept(TokenKind::RParen)) {
-      port.bound_data = parse_name_list("a data name");
-      expect(TokenKind::RParen, "to close the data bound to port '" + port.name.text + "'");
-    }
+    port.bound_data = parse_bound_data(port.name);
     atom.ports.push_back(std::move(port));
   } while (accept(TokenKind::Comma));
 

@@ -44,11 +44,7 @@ ast::ConnectorTypeDecl Parser::parse_connector_type(ast::Annotations annotations
       expect(TokenKind::KwPort, "after 'export' (a connector type exports one port)");
       port.type = parse_qualified_name("a port type name");
       port.name = expect_name("the name of the exported port");
-      expect(TokenKind::LParen, "after port name '" + port.name.text + "'");
-      if (!accept(TokenKind::RParen)) {
-        port.bound_data = parse_name_list("a data name");
-        expect(TokenKind::RParen, "to close the data bound to port '" + port.name.text + "'");
-      }
+      port.bound_data = parse_bound_data(port.name);
       connector.export_port = std::move(port);
     } else if (at(TokenKind::KwDefine) && declaration_annotations.empty()) {
       break;

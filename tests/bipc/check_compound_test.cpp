@@ -6,6 +6,7 @@
 
 #include "bipc/bipc.h"
 #include "bipc/check/detail/check_context.h"
+#include "check_test_util.h"
 
 namespace smcbip::bipc {
 namespace {
@@ -45,21 +46,7 @@ const char* const kPrelude =
     "  end\n";
 constexpr int kFirstLine = 32;
 
-struct Checked {
-  LoadedModel model;
-  Diagnostics diags;
-  bool ok = false;
-
-  bool has(Severity severity, int line, int column, const std::string& phrase) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.severity == severity && (line == 0 || static_cast<int>(d.location.line) == line) &&
-          (column == 0 || static_cast<int>(d.location.column) == column) &&
-          d.message.find(phrase) != std::string::npos) {
-        return true;
-      }
-    }
-    return false;
-  }
+struct Checked : check_test::Checked {
   bool error(int line, int column, const std::string& phrase) const {
     return has(Severity::Error, line, column, phrase);
   }
@@ -74,19 +61,12 @@ struct Checked {
   const ast::CompoundTypeDecl& compound(std::size_t i = 0) const {
     return package().compound_types.at(i);
   }
-  std::string text() const { return diags.format(model.files); }
 };
 
 /// Parses the prelude followed by `compounds` and checks the package.
 std::unique_ptr<Checked> check_compounds(const std::string& compounds) {
   auto c = std::make_unique<Checked>();
-  const std::uint32_t file = c->model.files.add("test.bip");
-  std::unique_ptr<ast::Package> package =
-      parse_package(std::string(kPrelude) + compounds + "end\n", file, c->diags);
-  EXPECT_FALSE(c->diags.has_errors()) << c->diags.format(c->model.files);
-  c->model.main = package.get();
-  c->model.packages.push_back(std::move(package));
-  c->ok = check(c->model, c->diags);
+  check_test::check_into(*c, std::string(kPrelude) + compounds + "end\n");
   return c;
 }
 

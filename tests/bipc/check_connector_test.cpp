@@ -6,37 +6,13 @@
 
 #include "bipc/bipc.h"
 #include "bipc/check/detail/check_context.h"
+#include "check_test_util.h"
 
 namespace smcbip::bipc {
 namespace {
 
-struct Checked {
-  LoadedModel model;
-  Diagnostics diags;
-  bool ok = false;
-  bool has(int line, int column, const std::string& phrase) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.severity == Severity::Error && static_cast<int>(d.location.line) == line &&
-          (column == 0 || static_cast<int>(d.location.column) == column) &&
-          d.message.find(phrase) != std::string::npos) {
-        return true;
-      }
-    }
-    return false;
-  }
-  std::string text() const { return diags.format(model.files); }
-};
-
-Checked check_text(const std::string& text) {
-  Checked c;
-  const std::uint32_t file = c.model.files.add("test.bip");
-  std::unique_ptr<ast::Package> package = parse_package(text, file, c.diags);
-  EXPECT_FALSE(c.diags.has_errors()) << c.diags.format(c.model.files);
-  c.model.main = package.get();
-  c.model.packages.push_back(std::move(package));
-  c.ok = check(c.model, c.diags);
-  return c;
-}
+using check_test::check_text;
+using check_test::Checked;
 
 /// A connector over ports a..e (indices 0..4) with the given define, checked.
 Checked connector(const std::string& define) {

@@ -5,38 +5,13 @@
 #include <string>
 
 #include "bipc/bipc.h"
+#include "check_test_util.h"
 
 namespace smcbip::bipc {
 namespace {
 
-/// Parses one package (which must be free of syntax errors) and checks it.
-struct Checked {
-  LoadedModel model;
-  Diagnostics diags;
-  bool ok = false;
-  bool has(int line, int column, const std::string& phrase) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.severity == Severity::Error && static_cast<int>(d.location.line) == line &&
-          (column == 0 || static_cast<int>(d.location.column) == column) &&
-          d.message.find(phrase) != std::string::npos) {
-        return true;
-      }
-    }
-    return false;
-  }
-  std::string text() const { return diags.format(model.files); }
-};
-
-Checked check_text(const std::string& text) {
-  Checked c;
-  const std::uint32_t file = c.model.files.add("test.bip");
-  std::unique_ptr<ast::Package> package = parse_package(text, file, c.diags);
-  EXPECT_FALSE(c.diags.has_errors()) << c.diags.format(c.model.files);
-  c.model.main = package.get();
-  c.model.packages.push_back(std::move(package));
-  c.ok = check(c.model, c.diags);
-  return c;
-}
+using check_test::check_text;
+using check_test::Checked;
 
 /// An atom with data `n`, `f`, `b`, `s`, parameter `k`, clocks `x`, `y`, an extern type and a
 /// few prototypes; `body` adds transitions (line 14 onwards).

@@ -7,43 +7,14 @@
 
 #include "bipc/bipc.h"
 #include "bipc/check/detail/check_context.h"
+#include "check_test_util.h"
 
 namespace smcbip::bipc {
 namespace {
 
-struct Checked {
-  LoadedModel model;
-  Diagnostics diags;
-  bool ok = false;
-  bool has(int line, int column, const std::string& phrase) const {
-    for (const Diagnostic& d : diags.all()) {
-      if (d.severity == Severity::Error && static_cast<int>(d.location.line) == line &&
-          (column == 0 || static_cast<int>(d.location.column) == column) &&
-          d.message.find(phrase) != std::string::npos) {
-        return true;
-      }
-    }
-    return false;
-  }
-  std::string text() const { return diags.format(model.files); }
-};
-
-/// Parses packages (each using the ones before it) and checks them together.
-Checked check_texts(const std::vector<std::string>& texts) {
-  Checked c;
-  for (const std::string& text : texts) {
-    const std::uint32_t file = c.model.files.add("test" + std::to_string(c.model.packages.size()));
-    std::unique_ptr<ast::Package> package = parse_package(text, file, c.diags);
-    EXPECT_FALSE(c.diags.has_errors()) << c.diags.format(c.model.files);
-    for (const auto& used : c.model.packages) package->used_packages.push_back(used.get());
-    c.model.main = package.get();
-    c.model.packages.push_back(std::move(package));
-  }
-  c.ok = check(c.model, c.diags);
-  return c;
-}
-
-Checked check_text(const std::string& text) { return check_texts({text}); }
+using check_test::check_text;
+using check_test::check_texts;
+using check_test::Checked;
 
 TEST(CheckPackage, QualifiedAndTransitiveLookup) {
   const Checked c =

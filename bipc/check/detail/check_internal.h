@@ -92,6 +92,39 @@ int index_of_ident(const std::vector<ast::Ident>& idents, const std::string& nam
 /// The expression contexts whose guards may compare clocks.
 bool clocks_comparable(ExprContext::Where where);
 
+/// Whether a type is native: bool, int, float or string.
+bool is_native(const ast::ValueType& type);
+/// Whether a type is int or float.
+bool is_numeric(const ast::ValueType& type);
+
+// Declarations checked alike in several kinds of types (declarations.cpp).
+
+/// Requires a native type for a parameter or constant (`what`: "parameter 'n'", "constant 'K'"),
+/// whose type has been resolved; false, after reporting, when it is another (valid) type.
+bool require_native_type(const ast::TypeRef& type, const std::string& what, Diagnostics& diags);
+
+/// Resolves the types of the data of an atom or connector type and checks their initial values
+/// (in `ctx`); constant data must have one.
+void check_data_declarations(std::vector<ast::DataDecl>& data, const ExprContext& ctx,
+                             const Symbols& symbols, Diagnostics& diags);
+
+/// The port type named `type`; nullptr when there is none (reported unless nothing was written).
+const ast::PortTypeDecl* resolve_port_type(const ast::QualifiedName& type,
+                                           const ast::Package& package, const Symbols& symbols,
+                                           Diagnostics& diags);
+
+/// A port that binds data (an atom's port, a connector's exported port: `what` names its kind in
+/// messages) binds one data per parameter of its port type (nullptr: unknown, not checked).
+void check_bound_count(const std::string& what, const ast::Ident& port,
+                       const ast::QualifiedName& type, const ast::PortTypeDecl* port_type,
+                       std::size_t bound_count, Diagnostics& diags);
+
+/// The `k`-th data bound by such a port, `bound` of type `actual`, must have exactly the type of
+/// the port type's `k`-th parameter (not checked when either is unknown).
+void check_bound_type(const std::string& what, const ast::Ident& port,
+                      const ast::PortTypeDecl* port_type, std::size_t k, const ast::Ident& bound,
+                      const ast::ValueType& actual, Diagnostics& diags);
+
 // Pieces of the atom check, each in its own file.
 
 /// Checks the `@stochastic` annotations of one port of `atom`.
