@@ -6,7 +6,6 @@ namespace smcbip::bipc::detail {
 
 namespace {
 
-using Kind = ast::ValueType::Kind;
 using Where = ExprContext::Where;
 
 /// Parameters, data, ports (with merged export names) and clocks share one namespace.

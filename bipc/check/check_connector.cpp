@@ -9,7 +9,6 @@ namespace smcbip::bipc::detail {
 
 namespace {
 
-using Kind = ast::ValueType::Kind;
 using Where = ExprContext::Where;
 
 void declare_names(const ast::ConnectorTypeDecl& connector, Diagnostics& diags) {

@@ -306,7 +306,9 @@ struct System {
   std::vector<AtomInstance> atoms;
   std::vector<ConnectorInstance> connectors;
   std::vector<CompoundInstance> compounds;  // compounds[0] is the root
-  std::vector<std::string> cpp_includes, cpp_sources;  // from `@cpp(include=..., src=...)`
+  // From `@cpp(include=..., src=...)`: sources resolved against the folder of the package that
+  // names them, headers as written, and those folders as include directories.
+  std::vector<std::string> cpp_includes, cpp_sources, cpp_include_dirs;
 };
 
 }  // namespace smcbip::bipc::ir

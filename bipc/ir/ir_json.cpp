@@ -160,19 +160,6 @@ json data_json(const std::vector<Data>& data, const System& s) {
   return out;
 }
 
-std::string port_ref_name(const PortRef& ref, const System& s) {
-  if (ref.kind == PortRef::Kind::Connector) {
-    if (ref.instance >= s.connectors.size()) return "?";
-    const ConnectorInstance& k = s.connectors[ref.instance];
-    const bool typed = k.type < s.connector_types.size() && s.connector_types[k.type].export_name;
-    return k.path + "." + (typed ? *s.connector_types[k.type].export_name : std::string("?"));
-  }
-  if (ref.instance >= s.atoms.size()) return "?";
-  const AtomInstance& a = s.atoms[ref.instance];
-  const bool known = a.type < s.atom_types.size() && ref.port < s.atom_types[a.type].ports.size();
-  return a.path + "." + (known ? s.atom_types[a.type].ports[ref.port].name : std::string("?"));
-}
-
 json port_refs_json(const std::vector<PortRef>& refs, const System& s) {
   json out = json::array();
   for (const PortRef& ref : refs) out.push_back(port_ref_name(ref, s));
@@ -514,8 +501,23 @@ nlohmann::json to_json(const System& s) {
   }
   out["connectors"] = json::array();
   for (const ConnectorInstance& k : s.connectors) out["connectors"].push_back(connector_json(k, s));
-  out["cpp"] = {{"includes", s.cpp_includes}, {"sources", s.cpp_sources}};
+  out["cpp"] = {{"includes", s.cpp_includes},
+                {"sources", s.cpp_sources},
+                {"include_dirs", s.cpp_include_dirs}};
   return out;
+}
+
+std::string port_ref_name(const PortRef& ref, const System& s) {
+  if (ref.kind == PortRef::Kind::Connector) {
+    if (ref.instance >= s.connectors.size()) return "?";
+    const ConnectorInstance& k = s.connectors[ref.instance];
+    const bool typed = k.type < s.connector_types.size() && s.connector_types[k.type].export_name;
+    return k.path + "." + (typed ? *s.connector_types[k.type].export_name : std::string("?"));
+  }
+  if (ref.instance >= s.atoms.size()) return "?";
+  const AtomInstance& a = s.atoms[ref.instance];
+  const bool known = a.type < s.atom_types.size() && ref.port < s.atom_types[a.type].ports.size();
+  return a.path + "." + (known ? s.atom_types[a.type].ports[ref.port].name : std::string("?"));
 }
 
 }  // namespace smcbip::bipc::ir

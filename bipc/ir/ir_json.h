@@ -16,4 +16,7 @@ nlohmann::json to_json(const System& system);
 /// "jump_if_false 7"... Loads and stores of another instance's data name it after a `;`.
 std::string instruction_text(const Instr& instr, const System& system);
 
+/// A bound port by name: `path.port` for an atom port, `path.export` for a connector's export.
+std::string port_ref_name(const PortRef& ref, const System& system);
+
 }  // namespace smcbip::bipc::ir

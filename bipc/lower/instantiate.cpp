@@ -2,6 +2,7 @@
 // instances, with ports resolved through exports and constants folded.
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -380,9 +381,18 @@ class Instantiator {
                        : p.key.text == "include" ? &system_.cpp_includes
                                                  : nullptr;
           if (list == nullptr) continue;
-          for (const std::string& file : split_list(*p.value)) {
+          const std::filesystem::path folder = std::filesystem::path(package->path).parent_path();
+          for (const std::string& written : split_list(*p.value)) {
+            // Extern sources are named relative to the package file, as the Verimag compiler
+            // reads them; headers are found through the package folders.
+            const std::string file = list == &system_.cpp_sources && !written.empty() &&
+                                             std::filesystem::path(written).is_relative()
+                                         ? (folder / written).lexically_normal().string()
+                                         : written;
             if (seen.insert(p.key.text + ":" + file).second) list->push_back(file);
           }
+          const std::string dir = folder.empty() ? "." : folder.string();
+          if (seen.insert("dir:" + dir).second) system_.cpp_include_dirs.push_back(dir);
         }
       }
     }

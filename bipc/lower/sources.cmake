@@ -9,4 +9,5 @@ list(APPEND BIPC_SOURCES
   lower/instantiate.cpp
   lower/instance_checks.cpp
   ir/ir_json.cpp
+  ir/ir_text.cpp
   ir/ir_dot.cpp)

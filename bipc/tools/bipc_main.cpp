@@ -12,6 +12,7 @@
 #include "bipc/bipc.h"
 #include "bipc/ir/ir_dot.h"
 #include "bipc/ir/ir_json.h"
+#include "bipc/ir/ir_text.h"
 #include "bipc/options.h"
 
 namespace {
@@ -65,10 +66,11 @@ int run_dot(const FrontendOptions& options, const std::string& output) {
   return kOk;
 }
 
-int run_ir(const FrontendOptions& options, const std::string& output) {
+int run_ir(const FrontendOptions& options, const std::string& output, bool json_format) {
   FrontendResult result = run_frontend(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
-  const std::string json = ir::to_json(*result.system).dump(2) + "\n";
+  const std::string json =
+      json_format ? ir::to_json(*result.system).dump(2) + "\n" : ir::to_text(*result.system);
   if (output.empty() || output == "-") {
     std::cout << json;
     return kOk;
@@ -99,18 +101,19 @@ int run(int argc, char** argv) {
   bool json = false;
   CLI::App* ir_cmd = app.add_subcommand("ir", "dump the IR of a root instantiation");
   register_frontend_options(*ir_cmd, ir_options);
-  ir_cmd->add_flag("--json", json, "JSON dump (the only format so far)");
+  ir_cmd->add_flag("--json", json, "the complete IR as JSON (default: an outline of the instances)");
   ir_cmd->add_option("-o,--output", ir_output, "output file (default: stdout)");
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kInputError;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << "bipc: error: " << e.what() << "\nRun with --help for more information.\n";
+    return kInputError;
   }
   if (check->parsed()) return run_check(check_options);
   if (dot->parsed()) return run_dot(dot_options, dot_output);
-  return run_ir(ir_options, ir_output);
+  return run_ir(ir_options, ir_output, json);
 }
 
 }  // namespace

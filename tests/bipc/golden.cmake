@@ -12,7 +12,8 @@ set(BIPC_GOLDEN_RUNNER ${CMAKE_CURRENT_SOURCE_DIR}/../run_golden.sh)
 
 file(GLOB BIPC_GOLDEN_MODELS CONFIGURE_DEPENDS
   ${CMAKE_CURRENT_SOURCE_DIR}/golden/invalid/*.bip
-  ${CMAKE_CURRENT_SOURCE_DIR}/golden/valid/*.bip)
+  ${CMAKE_CURRENT_SOURCE_DIR}/golden/valid/*.bip
+  ${CMAKE_CURRENT_SOURCE_DIR}/golden/tools/*.bip)
 
 foreach(golden_model IN LISTS BIPC_GOLDEN_MODELS)
   get_filename_component(golden_stem ${golden_model} NAME_WLE)

@@ -6,7 +6,8 @@ set(BIPC_PUBLIC_HEADERS
   bipc/ast/ast.h
   bipc/ir/ir.h
   bipc/ir/ir_json.h
-  bipc/ir/ir_dot.h)
+  bipc/ir/ir_dot.h
+  bipc/ir/ir_text.h)
 set(BIPC_HEADER_UNITS)
 foreach(header IN LISTS BIPC_PUBLIC_HEADERS)
   string(MAKE_C_IDENTIFIER ${header} unit_name)
