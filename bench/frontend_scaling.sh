@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times `bipc check` on generated chain and broadcast models of 10 to 10,000 atoms.
+# Times `bipc check` on generated chain, chain-with-priorities and broadcast models of 10 to 10,000 atoms.
 #
 # Usage: bench/frontend_scaling.sh [BUILD_DIR]   (default: build)
 # Prints, per family and size, the best wall time of a few runs, the peak resident memory, the
@@ -49,7 +49,7 @@ time_check() {
 
 status=0
 printf '%-10s %7s %10s %9s %12s %10s\n' family atoms seconds peak_MB 'x_prev(10x)' 'us/atom'
-for family in chain broadcast; do
+for family in chain priorities broadcast; do
   previous=""
   for n in "${sizes[@]}"; do
     model="$models_dir/${family}_$n.bip"
