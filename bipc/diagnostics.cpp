@@ -50,8 +50,8 @@ const char* severity_name(Severity severity) {
 std::string Diagnostics::format(const SourceFiles& files) const {
   std::string out;
   for (const Diagnostic& d : items_) {
-    const std::string& path =
-        d.location.file < files.paths.size() ? files.paths[d.location.file] : std::string("<input>");
+    const std::string& path = d.location.file < files.paths.size() ? files.paths[d.location.file]
+                                                                   : std::string("<input>");
     out += path + ":" + std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
            ": " + severity_name(d.severity) + ": " + d.message + "\n";
   }

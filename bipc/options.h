@@ -12,8 +12,7 @@ inline void register_frontend_options(CLI::App& app, FrontendOptions& options) {
   app.add_option("file", options.file, "BIP2 package file (.bip)")->required();
   app.add_option("-I,--include", options.include_dirs,
                  "folder searched for used packages (repeatable)");
-  app.add_option("--root", options.root,
-                 "root instantiation, e.g. 'Syst()' or 'pkg.Top(3)'");
+  app.add_option("--root", options.root, "root instantiation, e.g. 'Syst()' or 'pkg.Top(3)'");
 }
 
 }  // namespace smcbip::bipc

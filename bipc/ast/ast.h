@@ -31,7 +31,8 @@ struct QualifiedName {
 /// `@name(key=value, key)`; unknown annotations are kept for later stages.
 struct AnnotationParam {
   Ident key;
-  std::optional<std::string> value;  // string literals unquoted and unescaped; ids/true/false as written
+  std::optional<std::string>
+      value;  // string literals unquoted and unescaped; ids/true/false as written
   Location value_loc;
 };
 struct Annotation {
@@ -75,21 +76,36 @@ struct TypeRef {
 
 enum class UnaryOp : std::uint8_t { Minus, Plus, Not, BitNot };
 enum class BinaryOp : std::uint8_t {
-  Or, And, BitOr, BitXor, BitAnd, Eq, Ne, Lt, Gt, Le, Ge, Add, Sub, Mul, Div, Mod
+  Or,
+  And,
+  BitOr,
+  BitXor,
+  BitAnd,
+  Eq,
+  Ne,
+  Lt,
+  Gt,
+  Le,
+  Ge,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod
 };
 
 /// What a name in an expression denotes (resolved by the checker).
 enum class RefKind : std::uint8_t {
   Unresolved,
-  AtomData,        // index: data declaration index in the atom type
-  AtomParam,       // index: parameter index of the atom type
-  AtomClock,       // index: clock index in the atom type
-  ConstData,       // const_data points at the package constant
-  ConnectorData,   // index: data declaration index in the connector type
-  PortParam,       // index: connector port parameter index; sub: port-type parameter index
-  CompoundParam,   // index: parameter index of the compound type
-  ComponentData,   // compound priority guard / export: index: component index; sub unused;
-                   // member: the exported data name inside that component
+  AtomData,       // index: data declaration index in the atom type
+  AtomParam,      // index: parameter index of the atom type
+  AtomClock,      // index: clock index in the atom type
+  ConstData,      // const_data points at the package constant
+  ConnectorData,  // index: data declaration index in the connector type
+  PortParam,      // index: connector port parameter index; sub: port-type parameter index
+  CompoundParam,  // index: parameter index of the compound type
+  ComponentData,  // compound priority guard / export: index: component index; sub unused;
+                  // member: the exported data name inside that component
 };
 
 struct Resolution {
@@ -192,7 +208,15 @@ struct DataDecl {
   Location loc;
 };
 
-enum class TimeUnit : std::uint8_t { Nanosecond, Microsecond, Millisecond, Second, Minute, Hour, Day };
+enum class TimeUnit : std::uint8_t {
+  Nanosecond,
+  Microsecond,
+  Millisecond,
+  Second,
+  Minute,
+  Hour,
+  Day
+};
 enum class ExternPolicy : std::uint8_t { Remember, Ignore, Error };
 enum class Urgency : std::uint8_t { Lazy, Delayable, Eager };
 

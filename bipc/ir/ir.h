@@ -57,17 +57,30 @@ enum class Op : std::uint8_t {
   Load,        // scope, index, arg
   Store,       // scope, index, arg: pops the value
   StoreRate,   // index: clock whose rate becomes the popped value
-  Neg, Not, BitNot,
-  Add, Sub, Mul, Div, Mod,  // `kind` says Int or Float arithmetic
-  BitAnd, BitOr, BitXor,
-  Eq, Ne, Lt, Le, Gt, Ge,  // `kind` is the compared operand kind
-  IntToFloat,              // converts the top of the stack
-  Call,                    // index: System::functions, arg: argument count; pushes the result
-  Jump,                    // index: target instruction
-  JumpIfFalse,             // pops; index: target
-  JumpIfFalseKeep,         // `&&` short circuit: keeps false on the stack when jumping
-  JumpIfTrueKeep,          // `||` short circuit: keeps true on the stack when jumping
-  Pop,                     // discards a call result used as a statement
+  Neg,
+  Not,
+  BitNot,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,  // `kind` says Int or Float arithmetic
+  BitAnd,
+  BitOr,
+  BitXor,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,               // `kind` is the compared operand kind
+  IntToFloat,       // converts the top of the stack
+  Call,             // index: System::functions, arg: argument count; pushes the result
+  Jump,             // index: target instruction
+  JumpIfFalse,      // pops; index: target
+  JumpIfFalseKeep,  // `&&` short circuit: keeps false on the stack when jumping
+  JumpIfTrueKeep,   // `||` short circuit: keeps true on the stack when jumping
+  Pop,              // discards a call result used as a statement
 };
 
 struct Instr {
@@ -125,7 +138,15 @@ struct Data {
   Code initial_value;  // empty: default value
 };
 
-enum class TimeUnit : std::uint8_t { Nanosecond, Microsecond, Millisecond, Second, Minute, Hour, Day };
+enum class TimeUnit : std::uint8_t {
+  Nanosecond,
+  Microsecond,
+  Millisecond,
+  Second,
+  Minute,
+  Hour,
+  Day
+};
 enum class Urgency : std::uint8_t { Lazy, Delayable, Eager };
 enum class ExternPolicy : std::uint8_t { Remember, Ignore, Error };
 
@@ -135,7 +156,14 @@ struct Clock {
 };
 
 enum class Distribution : std::uint8_t {
-  Normal, Exponential, Gamma, Chi2, Uniform, Lognormal, Weibull, Custom
+  Normal,
+  Exponential,
+  Gamma,
+  Chi2,
+  Uniform,
+  Lognormal,
+  Weibull,
+  Custom
 };
 
 /// `@stochastic(dist=..., clk=..., param=...)` on a port.
@@ -148,8 +176,8 @@ struct Stochastic {
 
 struct Port {
   std::string name;
-  Index type = 0;            // System::port_types
-  std::vector<Index> data;   // atom data slot per port-type parameter
+  Index type = 0;           // System::port_types
+  std::vector<Index> data;  // atom data slot per port-type parameter
   bool exported = false;
   bool is_extern = false;
   ExternPolicy policy = ExternPolicy::Remember;
@@ -213,7 +241,7 @@ struct AtomType {
 /// A define expression node, kept as a tree: a broadcast over n ports has 2^(n-1) interactions,
 /// too many to list, so engines enumerate what they need from the tree.
 struct DefineNode {
-  Index port = kNone;           // leaf: port parameter index
+  Index port = kNone;  // leaf: port parameter index
   std::vector<DefineNode> children;
   bool trigger = false;
 };
@@ -230,8 +258,8 @@ struct ConnectorType {
   std::vector<Data> data;
   std::optional<std::string> export_name;
   Index export_type = kNone;
-  std::vector<Index> export_data;  // connector data slot per export port-type parameter
-  std::vector<DefineNode> define;  // top-level sequence
+  std::vector<Index> export_data;             // connector data slot per export port-type parameter
+  std::vector<DefineNode> define;             // top-level sequence
   std::vector<InteractionCode> interactions;  // the `on` clauses; other defined ones: no code
   enum class Resume : std::uint8_t { None, Sync, Async } resume = Resume::None;
   std::vector<Annotation> annotations;

@@ -1,13 +1,12 @@
 // bipc: check BIP2 models, draw their architecture, dump their IR.
 //
 // Exit codes: 0 success, 2 input or usage error, 3 internal error.
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <fstream>
 #include <iostream>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "bipc/bipc.h"
 #include "bipc/ir/ir_dot.h"
@@ -101,7 +100,8 @@ int run(int argc, char** argv) {
   bool json = false;
   CLI::App* ir_cmd = app.add_subcommand("ir", "dump the IR of a root instantiation");
   register_frontend_options(*ir_cmd, ir_options);
-  ir_cmd->add_flag("--json", json, "the complete IR as JSON (default: an outline of the instances)");
+  ir_cmd->add_flag("--json", json,
+                   "the complete IR as JSON (default: an outline of the instances)");
   ir_cmd->add_option("-o,--output", ir_output, "output file (default: stdout)");
 
   try {

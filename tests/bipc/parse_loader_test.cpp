@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <random>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 

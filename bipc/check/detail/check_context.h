@@ -17,15 +17,18 @@ class Symbols {
  public:
   explicit Symbols(const LoadedModel& model);
 
-  const ast::PortTypeDecl* port_type(const ast::Package& from, const ast::QualifiedName& name) const;
-  const ast::AtomTypeDecl* atom_type(const ast::Package& from, const ast::QualifiedName& name) const;
+  const ast::PortTypeDecl* port_type(const ast::Package& from,
+                                     const ast::QualifiedName& name) const;
+  const ast::AtomTypeDecl* atom_type(const ast::Package& from,
+                                     const ast::QualifiedName& name) const;
   const ast::CompoundTypeDecl* compound_type(const ast::Package& from,
                                              const ast::QualifiedName& name) const;
   const ast::ConnectorTypeDecl* connector_type(const ast::Package& from,
                                                const ast::QualifiedName& name) const;
   const ast::ExternTypeDecl* extern_type(const ast::Package& from,
                                          const ast::QualifiedName& name) const;
-  const ast::ConstDataDecl* constant(const ast::Package& from, const ast::QualifiedName& name) const;
+  const ast::ConstDataDecl* constant(const ast::Package& from,
+                                     const ast::QualifiedName& name) const;
   /// Every extern function or operator prototype named `name` visible from `from`.
   std::vector<const ast::ExternFunctionDecl*> functions(const ast::Package& from,
                                                         const std::string& name) const;
@@ -40,16 +43,16 @@ class Symbols {
 /// Where an expression or statement occurs; decides which names it may use and what it may do.
 struct ExprContext {
   enum class Where {
-    ConstInit,          // package constant initial value: constants only
-    AtomInit,           // data initial values, initial transition action
-    AtomGuard,          // transition guard: atom data, params, clocks (timed forms), constants
-    AtomAction,         // transition action: may assign data, reset clocks, set rates
-    AtomPriorityGuard,  // atom priority guard: data, params, constants; no clocks
-    Invariant,          // invariant guard: clocks allowed (timed forms)
-    Resume,             // resume guard
-    ConnectorGuard,     // `provided` of an interaction: port parameters of involved ports only
-    ConnectorUp,        // `up`: read ports of the interaction, write connector data
-    ConnectorDown,      // `down`: read connector data, write port parameters of involved ports
+    ConstInit,              // package constant initial value: constants only
+    AtomInit,               // data initial values, initial transition action
+    AtomGuard,              // transition guard: atom data, params, clocks (timed forms), constants
+    AtomAction,             // transition action: may assign data, reset clocks, set rates
+    AtomPriorityGuard,      // atom priority guard: data, params, constants; no clocks
+    Invariant,              // invariant guard: clocks allowed (timed forms)
+    Resume,                 // resume guard
+    ConnectorGuard,         // `provided` of an interaction: port parameters of involved ports only
+    ConnectorUp,            // `up`: read ports of the interaction, write connector data
+    ConnectorDown,          // `down`: read connector data, write port parameters of involved ports
     CompoundPriorityGuard,  // exported data of components (`c.x`), compound parameters
     ComponentArgument,      // arguments of a component instance: compound params, constants
     StochasticParam,        // a `@stochastic` parameter: atom params and data
@@ -81,8 +84,8 @@ void check_block(ast::Block& block, const ExprContext& ctx, const Symbols& symbo
 bool assignable(const ast::ValueType& from, const ast::ValueType& to);
 
 /// Resolves a written data type; reports unknown names.
-ast::ValueType resolve_type(ast::TypeRef& type, const ast::Package& package,
-                            const Symbols& symbols, Diagnostics& diags);
+ast::ValueType resolve_type(ast::TypeRef& type, const ast::Package& package, const Symbols& symbols,
+                            Diagnostics& diags);
 
 std::string type_name(const ast::ValueType& type);
 
