@@ -8,6 +8,7 @@
 #include "bipc/bipc.h"
 #include "bipc/check/detail/check_context.h"
 #include "check_test_util.h"
+#include "shared_data.h"
 
 namespace smcbip::bipc {
 namespace {
@@ -162,9 +163,10 @@ std::vector<std::string> rejected_in(const std::filesystem::path& dir) {
 }
 
 TEST(CheckConformance, ReferenceModelsCheckClean) {
-  const std::filesystem::path data =
-      std::filesystem::path(SMCBIP_SOURCE_DIR) / ".." / "shared" / "data";
-  if (!std::filesystem::exists(data / "bip-conformance")) GTEST_SKIP() << "no conformance data";
+  const std::filesystem::path data = test::shared_data_dir();
+  if (!std::filesystem::exists(data / "bip-conformance")) {
+    GTEST_SKIP() << "shared conformance data not found (set SMCBIP_SHARED_DATA)";
+  }
   EXPECT_EQ(rejected_in(data / "bip-conformance" / "running"),
             std::vector<std::string>{"priority_rules_cycle2.bip"});
   EXPECT_EQ(rejected_in(data / "bip-conformance" / "compile_only"),

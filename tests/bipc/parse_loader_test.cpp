@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bipc/bipc.h"
+#include "shared_data.h"
 
 namespace smcbip::bipc {
 namespace {
@@ -141,10 +142,7 @@ TEST_F(ParseLoader, SyntaxErrorsOfUsedPackagesPointIntoTheirFile) {
 // ---------------------------------------------------------------------------------------------
 // The real inputs: the reference compiler's conformance models and the ESROCOS watchdog.
 
-fs::path shared_data() {
-  if (const char* env = std::getenv("SMCBIP_SHARED_DATA")) return env;
-  return fs::path(SMCBIP_SOURCE_DIR) / ".." / "shared" / "data";
-}
+fs::path shared_data() { return smcbip::bipc::test::shared_data_dir(); }
 
 std::vector<fs::path> bip_files(const fs::path& dir) {
   std::vector<fs::path> files;
