@@ -20,6 +20,7 @@ build: deps
 
 demo: build
 	$(BUILD_DIR)/bin/bipc check models/rover_watchdog.bip --root $(ROOT)
+	$(BUILD_DIR)/bin/bipc ir models/rover_watchdog.bip --root $(ROOT)
 	$(BUILD_DIR)/bin/bipc dot models/rover_watchdog.bip --root $(ROOT) -o $(BUILD_DIR)/rover_watchdog.svg
 	@echo "The architecture picture is in $(BUILD_DIR)/rover_watchdog.svg"
 
