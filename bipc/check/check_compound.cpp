@@ -107,7 +107,7 @@ void compute_interfaces(CompoundScope& scope) {
     const ast::ComponentDecl& component = scope.type.components[i];
     const bool known = component.atom_type != nullptr || (component.compound_type != nullptr &&
                                                           !never.count(component.compound_type));
-    if (known) scope.interfaces[i] = interface_of(component, scope.symbols);
+    if (known) scope.interfaces[i] = interface_of_ending(component, scope.symbols);
   }
 }
 

@@ -65,15 +65,26 @@ bool contains_itself_directly(const InstantiationGraph& g, int v) {
 }
 
 /// Per vertex: whether its instantiation never ends (it is on a cycle or contains such a type).
+/// Linear in the graph: a chain of thousands of nested types is checked once per compound.
 std::vector<bool> never_ending(const InstantiationGraph& g) {
   std::vector<bool> result = on_long_cycle(g.graph);
-  for (std::size_t v = 0; v < result.size(); ++v) {
-    if (contains_itself_directly(g, static_cast<int>(v))) result[v] = true;
+  std::vector<std::vector<int>> containers(g.types.size());
+  for (const auto& e : g.containments) {
+    if (e.from == e.to) result[e.from] = true;
+    containers[e.to].push_back(e.from);
   }
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (const auto& e : g.containments) {
-      if (result[e.to] && !result[e.from]) changed = result[e.from] = true;
+  std::vector<int> pending;
+  for (std::size_t v = 0; v < result.size(); ++v) {
+    if (result[v]) pending.push_back(static_cast<int>(v));
+  }
+  while (!pending.empty()) {
+    const int v = pending.back();
+    pending.pop_back();
+    for (int from : containers[v]) {
+      if (!result[from]) {
+        result[from] = true;
+        pending.push_back(from);
+      }
     }
   }
   return result;

@@ -1,5 +1,8 @@
 // The interface of a component as its enclosing compound sees it: exported ports (merged exports
 // count once, under their `as` name) and exported data, for atom and compound types alike.
+#include <map>
+#include <utility>
+
 #include "bipc/check/detail/check_internal.h"
 
 namespace smcbip::bipc::detail {
@@ -9,10 +12,6 @@ namespace {
 // Nested compounds are followed this deep at most: a safety net, since interface_of does not
 // enter a type that contains itself (an error the compound check reports).
 constexpr int kMaxDepth = 64;
-
-ComponentInterface interface_of_types(const ast::AtomTypeDecl* atom,
-                                      const ast::CompoundTypeDecl* compound, const Symbols& symbols,
-                                      int depth);
 
 const ast::PortTypeDecl* port_type_of(const ast::PortDecl& port, const ast::AtomTypeDecl& atom,
                                       const Symbols& symbols) {
@@ -42,79 +41,92 @@ ComponentInterface atom_interface(const ast::AtomTypeDecl& atom, const Symbols& 
   return interface;
 }
 
-/// The inner component named `name`, with its types resolved by the compound check or, when
-/// that has not run yet, looked up here.
-ComponentInterface inner_interface(const ast::CompoundTypeDecl& compound, const std::string& name,
-                                   const Symbols& symbols, int depth) {
-  const int c = index_of(compound.components, name);
-  if (c < 0) return {};
-  const ast::ComponentDecl& component = compound.components[c];
-  const ast::AtomTypeDecl* atom = component.atom_type;
-  const ast::CompoundTypeDecl* inner = component.compound_type;
-  const ast::Package* package = symbols.package_of(&compound);
-  if (atom == nullptr && inner == nullptr && package != nullptr) {
-    atom = symbols.atom_type(*package, component.type);
-    if (atom == nullptr) inner = symbols.compound_type(*package, component.type);
-  }
-  return interface_of_types(atom, inner, symbols, depth + 1);
-}
+/// Computes interfaces through nested compounds. A compound re-exporting several ports of one
+/// inner component asks for that component's interface once per port: results are kept per
+/// type and depth, so a chain of such compounds costs linear, not exponential, time.
+class InterfaceFinder {
+ public:
+  explicit InterfaceFinder(const Symbols& symbols) : symbols_(symbols) {}
 
-/// The port type of `inner.port` inside `compound`: a component's port or a connector's export.
-const ast::PortTypeDecl* referenced_port_type(const ast::CompoundTypeDecl& compound,
-                                              const ast::QualifiedName& ref, const Symbols& symbols,
-                                              int depth) {
-  if (ref.parts.size() != 2) return nullptr;
-  const std::string& inner = ref.parts[0].text;
-  const std::string& port = ref.parts[1].text;
-  if (const int k = index_of(compound.connectors, inner); k >= 0) {
-    const ast::ConnectorDecl& connector = compound.connectors[k];
-    const ast::ConnectorTypeDecl* type = connector.connector_type;
-    const ast::Package* package = symbols.package_of(&compound);
-    if (type == nullptr && package != nullptr)
-      type = symbols.connector_type(*package, connector.type);
-    if (type == nullptr || !type->export_port || type->export_port->name.text != port)
-      return nullptr;
-    return type->export_port->port_type;
+  ComponentInterface of_types(const ast::AtomTypeDecl* atom, const ast::CompoundTypeDecl* compound,
+                              int depth) {
+    if (depth > kMaxDepth) return {};
+    if (atom != nullptr) return atom_interface(*atom, symbols_);
+    if (compound == nullptr) return {};
+    const auto key = std::make_pair(compound, depth);
+    if (auto found = known_.find(key); found != known_.end()) return found->second;
+    ComponentInterface interface = compound_interface(*compound, depth);
+    known_.emplace(key, interface);
+    return interface;
   }
-  for (const auto& entry : inner_interface(compound, inner, symbols, depth).ports) {
-    if (entry.name == port) return entry.type;
-  }
-  return nullptr;
-}
 
-ComponentInterface compound_interface(const ast::CompoundTypeDecl& compound, const Symbols& symbols,
-                                      int depth) {
-  ComponentInterface interface;
-  for (const ast::PortExportDecl& exported : compound.port_exports) {
-    const ast::PortTypeDecl* type = nullptr;
-    for (const ast::QualifiedName& ref : exported.ports) {
-      type = referenced_port_type(compound, ref, symbols, depth);
-      if (type != nullptr) break;
+ private:
+  /// The inner component named `name`, with its types resolved by the compound check or, when
+  /// that has not run yet, looked up here.
+  ComponentInterface inner_interface(const ast::CompoundTypeDecl& compound, const std::string& name,
+                                     int depth) {
+    const int c = index_of(compound.components, name);
+    if (c < 0) return {};
+    const ast::ComponentDecl& component = compound.components[c];
+    const ast::AtomTypeDecl* atom = component.atom_type;
+    const ast::CompoundTypeDecl* inner = component.compound_type;
+    const ast::Package* package = symbols_.package_of(&compound);
+    if (atom == nullptr && inner == nullptr && package != nullptr) {
+      atom = symbols_.atom_type(*package, component.type);
+      if (atom == nullptr) inner = symbols_.compound_type(*package, component.type);
     }
-    add_port(interface, exported.name.text, type);
+    return of_types(atom, inner, depth + 1);
   }
-  for (const ast::DataExportDecl& exported : compound.data_exports) {
-    ast::ValueType type;
-    if (exported.data.parts.size() == 2) {
-      const std::string& member = exported.data.parts[1].text;
-      for (const auto& entry :
-           inner_interface(compound, exported.data.parts[0].text, symbols, depth).data) {
-        if (entry.name == member) type = entry.type;
+
+  /// The port type of `inner.port` inside `compound`: a component's port or a connector's export.
+  const ast::PortTypeDecl* referenced_port_type(const ast::CompoundTypeDecl& compound,
+                                                const ast::QualifiedName& ref, int depth) {
+    if (ref.parts.size() != 2) return nullptr;
+    const std::string& inner = ref.parts[0].text;
+    const std::string& port = ref.parts[1].text;
+    if (const int k = index_of(compound.connectors, inner); k >= 0) {
+      const ast::ConnectorDecl& connector = compound.connectors[k];
+      const ast::ConnectorTypeDecl* type = connector.connector_type;
+      const ast::Package* package = symbols_.package_of(&compound);
+      if (type == nullptr && package != nullptr)
+        type = symbols_.connector_type(*package, connector.type);
+      if (type == nullptr || !type->export_port || type->export_port->name.text != port)
+        return nullptr;
+      return type->export_port->port_type;
+    }
+    for (const auto& entry : inner_interface(compound, inner, depth).ports) {
+      if (entry.name == port) return entry.type;
+    }
+    return nullptr;
+  }
+
+  ComponentInterface compound_interface(const ast::CompoundTypeDecl& compound, int depth) {
+    ComponentInterface interface;
+    for (const ast::PortExportDecl& exported : compound.port_exports) {
+      const ast::PortTypeDecl* type = nullptr;
+      for (const ast::QualifiedName& ref : exported.ports) {
+        type = referenced_port_type(compound, ref, depth);
+        if (type != nullptr) break;
       }
+      add_port(interface, exported.name.text, type);
     }
-    interface.data.push_back({exported.name.text, type});
+    for (const ast::DataExportDecl& exported : compound.data_exports) {
+      ast::ValueType type;
+      if (exported.data.parts.size() == 2) {
+        const std::string& member = exported.data.parts[1].text;
+        for (const auto& entry :
+             inner_interface(compound, exported.data.parts[0].text, depth).data) {
+          if (entry.name == member) type = entry.type;
+        }
+      }
+      interface.data.push_back({exported.name.text, type});
+    }
+    return interface;
   }
-  return interface;
-}
 
-ComponentInterface interface_of_types(const ast::AtomTypeDecl* atom,
-                                      const ast::CompoundTypeDecl* compound, const Symbols& symbols,
-                                      int depth) {
-  if (depth > kMaxDepth) return {};
-  if (atom != nullptr) return atom_interface(*atom, symbols);
-  if (compound != nullptr) return compound_interface(*compound, symbols, depth);
-  return {};
-}
+  const Symbols& symbols_;
+  std::map<std::pair<const ast::CompoundTypeDecl*, int>, ComponentInterface> known_;
+};
 
 }  // namespace
 
@@ -124,7 +136,12 @@ ComponentInterface interface_of(const ast::ComponentDecl& component, const Symbo
       instantiation_never_ends(*component.compound_type, symbols)) {
     return {};
   }
-  return interface_of_types(component.atom_type, component.compound_type, symbols, 0);
+  return interface_of_ending(component, symbols);
+}
+
+ComponentInterface interface_of_ending(const ast::ComponentDecl& component,
+                                       const Symbols& symbols) {
+  return InterfaceFinder(symbols).of_types(component.atom_type, component.compound_type, 0);
 }
 
 }  // namespace smcbip::bipc::detail

@@ -19,6 +19,9 @@ namespace {
 // Far beyond any model we know of, low enough that a type nesting that doubles at every level
 // is refused before it exhausts memory.
 constexpr std::uint64_t kMaxInstances = 16'000'000;
+// Instantiation recurses once per level of compound nesting (about a kilobyte of stack each):
+// deeper nestings are refused rather than risk overflowing the stack.
+constexpr std::uint64_t kMaxNesting = 1000;
 
 std::string join(const std::string& path, const std::string& name) {
   return path.empty() ? name : path + "." + name;
@@ -96,10 +99,15 @@ class Instantiator {
       return;
     }
     const ast::CompoundTypeDecl& type = *root.compound_type;
-    const std::uint64_t count = count_instances(type);
-    if (count > kMaxInstances) {
+    const Extent extent = extent_of(type);
+    if (extent.instances > kMaxInstances) {
       diags_.error(root.loc, "the root has more than " + std::to_string(kMaxInstances) +
                                  " component and connector instances; not supported");
+      return;
+    }
+    if (extent.nesting > kMaxNesting) {
+      diags_.error(root.loc, "the root nests compound instances more than " +
+                                 std::to_string(kMaxNesting) + " levels deep; not supported");
       return;
     }
     system_.root_type = lowering_.qualified_name(&type, type.name.text);
@@ -354,18 +362,30 @@ class Instantiator {
     return it->second;
   }
 
-  /// Instances a compound type expands to, saturated above the limit; computed per type so
-  /// that an exponential nesting is refused without expanding it.
-  std::uint64_t count_instances(const ast::CompoundTypeDecl& type) {
-    if (auto found = counts_.find(&type); found != counts_.end()) return found->second;
-    counts_[&type] = 0;  // a self-containing type is reported when it is built
-    std::uint64_t count = 1 + type.connectors.size();
+  /// The size of a compound type's instance tree: its instances, saturated above the limit,
+  /// and its depth in compound levels. Computed per type so that an exponential nesting is
+  /// refused without expanding it.
+  struct Extent {
+    std::uint64_t instances = 0;
+    std::uint64_t nesting = 0;
+  };
+  Extent extent_of(const ast::CompoundTypeDecl& type) {
+    if (auto found = extents_.find(&type); found != extents_.end()) return found->second;
+    extents_[&type] = Extent{};  // a self-containing type is reported when it is built
+    Extent extent{1 + type.connectors.size(), 1};
     for (const ast::ComponentDecl& c : type.components) {
-      count += c.compound_type != nullptr ? count_instances(*c.compound_type) : 1;
-      if (count > kMaxInstances) break;
+      if (c.compound_type == nullptr) {
+        extent.instances += 1;
+        continue;
+      }
+      const Extent inner = extent_of(*c.compound_type);
+      extent.instances += inner.instances;
+      extent.nesting = std::max(extent.nesting, inner.nesting + 1);
+      if (extent.instances > kMaxInstances || extent.nesting > kMaxNesting) break;
     }
-    counts_[&type] = std::min(count, kMaxInstances + 1);
-    return counts_[&type];
+    extent.instances = std::min(extent.instances, kMaxInstances + 1);
+    extents_[&type] = extent;
+    return extent;
   }
 
   /// `@cpp(src="a.cpp,b.cpp", include="x.hpp")` of every package, each file once.
@@ -419,7 +439,7 @@ class Instantiator {
   ir::System& system_;
   Diagnostics& diags_;
   std::unordered_map<const ast::CompoundTypeDecl*, MemberTable> members_;
-  std::unordered_map<const ast::CompoundTypeDecl*, std::uint64_t> counts_;
+  std::unordered_map<const ast::CompoundTypeDecl*, Extent> extents_;
   std::unordered_set<const ast::CompoundTypeDecl*> building_;  // against self-containment
   std::vector<Location> connector_locs_;                       // per connector instance
 };

@@ -1,5 +1,6 @@
 // Loading a model: the package of the given file and the packages it uses, transitively.
 #include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,10 @@
 namespace smcbip::bipc {
 
 namespace {
+
+// Packages are loaded depth-first, one stack frame level per `use`: a chain this long is refused
+// before it exhausts the stack (no model we know of goes beyond a handful of levels).
+constexpr std::size_t kMaxUseDepth = 256;
 
 std::optional<std::string> read_file(const std::string& path) {
   std::error_code error;
@@ -83,6 +88,11 @@ void Loader::resolve_use(ast::Package& package, const ast::QualifiedName& use) {
   auto known = loaded_.find(name);
   if (known != loaded_.end()) {
     if (known->second != nullptr) package.used_packages.push_back(known->second);
+    return;
+  }
+  if (loading_.size() >= kMaxUseDepth) {
+    diags_.error(use.loc(), "'use' of package '" + name + "' nested more than " +
+                                std::to_string(kMaxUseDepth) + " levels deep; not supported");
     return;
   }
   std::vector<std::string> searched;

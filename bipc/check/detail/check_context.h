@@ -114,7 +114,11 @@ struct ComponentInterface {
   std::vector<PortEntry> ports;
   std::vector<DataEntry> data;
 };
+/// The interface of a component; empty when its type's instantiation never ends.
 ComponentInterface interface_of(const ast::ComponentDecl& component, const Symbols& symbols);
+/// interface_of for a component whose type the caller already knows to end (check_compound.cpp
+/// finds those of all components at once).
+ComponentInterface interface_of_ending(const ast::ComponentDecl& component, const Symbols& symbols);
 
 /// Whether instantiating a compound type never ends: it contains itself, directly or through
 /// other compound types, or contains a type that does (reported by check_compound_type).
