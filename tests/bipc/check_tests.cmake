@@ -5,3 +5,4 @@ list(APPEND BIPC_TEST_SOURCES
   check_atom_test.cpp
   check_connector_test.cpp)
 list(APPEND BIPC_TEST_SOURCES check_compound_test.cpp)
+list(APPEND BIPC_TEST_SOURCES limits_test.cpp)
