@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bipc/diagnostics.h"
+#include "bipc/timing.h"
 
 namespace smcbip::bipc::ast {
 
@@ -208,17 +209,9 @@ struct DataDecl {
   Location loc;
 };
 
-enum class TimeUnit : std::uint8_t {
-  Nanosecond,
-  Microsecond,
-  Millisecond,
-  Second,
-  Minute,
-  Hour,
-  Day
-};
-enum class ExternPolicy : std::uint8_t { Remember, Ignore, Error };
-enum class Urgency : std::uint8_t { Lazy, Delayable, Eager };
+using bipc::ExternPolicy;
+using bipc::TimeUnit;
+using bipc::Urgency;
 
 struct ClockDecl {
   Ident name;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bipc/diagnostics.h"
+#include "bipc/timing.h"
 
 namespace smcbip::bipc::ir {
 
@@ -138,17 +139,9 @@ struct Data {
   Code initial_value;  // empty: default value
 };
 
-enum class TimeUnit : std::uint8_t {
-  Nanosecond,
-  Microsecond,
-  Millisecond,
-  Second,
-  Minute,
-  Hour,
-  Day
-};
-enum class Urgency : std::uint8_t { Lazy, Delayable, Eager };
-enum class ExternPolicy : std::uint8_t { Remember, Ignore, Error };
+using bipc::ExternPolicy;
+using bipc::TimeUnit;
+using bipc::Urgency;
 
 struct Clock {
   std::string name;

@@ -9,52 +9,6 @@ namespace smcbip::bipc::lower {
 
 namespace {
 
-ir::TimeUnit time_unit(ast::TimeUnit unit) {
-  switch (unit) {
-    case ast::TimeUnit::Nanosecond:
-      return ir::TimeUnit::Nanosecond;
-    case ast::TimeUnit::Microsecond:
-      return ir::TimeUnit::Microsecond;
-    case ast::TimeUnit::Millisecond:
-      return ir::TimeUnit::Millisecond;
-    case ast::TimeUnit::Second:
-      return ir::TimeUnit::Second;
-    case ast::TimeUnit::Minute:
-      return ir::TimeUnit::Minute;
-    case ast::TimeUnit::Hour:
-      return ir::TimeUnit::Hour;
-    case ast::TimeUnit::Day:
-      return ir::TimeUnit::Day;
-  }
-  return ir::TimeUnit::Millisecond;
-}
-
-ir::Urgency urgency(std::optional<ast::Urgency> u) {
-  if (!u) return ir::Urgency::Lazy;  // BIP2's default
-  switch (*u) {
-    case ast::Urgency::Eager:
-      return ir::Urgency::Eager;
-    case ast::Urgency::Delayable:
-      return ir::Urgency::Delayable;
-    case ast::Urgency::Lazy:
-      break;
-  }
-  return ir::Urgency::Lazy;
-}
-
-ir::ExternPolicy policy(std::optional<ast::ExternPolicy> p) {
-  if (!p) return ir::ExternPolicy::Remember;
-  switch (*p) {
-    case ast::ExternPolicy::Ignore:
-      return ir::ExternPolicy::Ignore;
-    case ast::ExternPolicy::Error:
-      return ir::ExternPolicy::Error;
-    case ast::ExternPolicy::Remember:
-      break;
-  }
-  return ir::ExternPolicy::Remember;
-}
-
 std::vector<ir::Index> indices(const std::vector<int>& resolved) {
   std::vector<ir::Index> result;
   result.reserve(resolved.size());
@@ -80,7 +34,7 @@ class AtomLowering {
     }
     for (const ast::DataDecl& d : decl_.data) t.data.push_back(data(d));
     for (const ast::ClockDecl& c : decl_.clocks) {
-      t.clocks.push_back({c.name.text, c.unit ? time_unit(*c.unit) : ir::TimeUnit::Millisecond});
+      t.clocks.push_back({c.name.text, c.unit.value_or(TimeUnit::Millisecond)});
     }
     for (const ast::Ident& place : decl_.places) t.places.push_back(place.text);
     for (const ast::PortDecl& p : decl_.ports) t.ports.push_back(port(p));
@@ -121,7 +75,7 @@ class AtomLowering {
     out.data = indices(p.bound_data_index);
     out.exported = p.exported;
     out.is_extern = p.is_extern;
-    out.policy = policy(p.policy);
+    out.policy = p.policy.value_or(ExternPolicy::Remember);
     if (p.backend_name) out.backend_name = *p.backend_name;
     for (const ast::Annotation& a : p.annotations) {
       if (a.name.text != "stochastic") continue;
@@ -178,7 +132,7 @@ class AtomLowering {
     }
     out.guard = code_.expression(tr.guard.get(), ir::ValueKind::Bool);
     out.action = code_.block(tr.action);
-    out.urgency = urgency(tr.urgency);
+    out.urgency = tr.urgency.value_or(Urgency::Lazy);  // BIP2's default
     if (tr.resume) out.resume = resume(*tr.resume);
     out.annotations = lower_annotations(tr.annotations);
     out.loc = tr.loc;
