@@ -19,7 +19,7 @@ class InstanceChecker {
       : system_(system),
         locs_(locs),
         diags_(diags),
-        state_(system.connectors.size(), State::Todo),
+        state_(system.connectors.size(), State::Unvisited),
         summaries_(system.connectors.size()),
         owner_connector_(system.atoms.size(), ir::kNone),
         owner_param_(system.atoms.size(), 0) {}
@@ -29,7 +29,7 @@ class InstanceChecker {
   }
 
  private:
-  enum class State : std::uint8_t { Todo, Active, Done };
+  enum class State : std::uint8_t { Unvisited, Active, Done };
 
   /// The atoms a connector's interactions may involve, and whether one has a stochastic port.
   struct Summary {
