@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "bipc/output_file.h"
+
 extern char** environ;
 
 namespace smcbip::bipc::ir {
@@ -161,25 +163,6 @@ class DotWriter {
   std::string out_;
 };
 
-/// Writes `text` to a new temporary file from `pattern` (mkstemp); returns its path or "".
-std::string write_temporary(const std::string& pattern, const std::string& text) {
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  const int fd = ::mkstemp(name.data());
-  if (fd < 0) return {};
-  ::fchmod(fd, 0644);  // mkstemp's 0600 would make the renamed picture private
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
-  const bool ok = ::close(fd) == 0 && written == text.size();
-  if (!ok) ::unlink(name.data());
-  return ok ? std::string(name.data()) : std::string();
-}
-
 /// Runs `dot -T<format> -o <output> <input>`; collects what it says on stderr.
 bool run_dot(const std::string& format, const std::string& input, const std::string& output,
              std::string& error) {
@@ -254,10 +237,10 @@ bool render_svg(const std::string& dot, const std::string& out_path, std::string
   const std::string pattern = out_path + ".tmpXXXXXX";
   std::string result;
   if (text) {
-    result = write_temporary(pattern, dot);
+    result = write_temporary_file(pattern, dot);
   } else {
-    const std::string input = write_temporary(pattern, dot);
-    result = input.empty() ? std::string() : write_temporary(pattern, "");
+    const std::string input = write_temporary_file(pattern, dot);
+    result = input.empty() ? std::string() : write_temporary_file(pattern, "");
     const bool ok = !result.empty() && run_dot(ext.substr(1), input, result, error);
     if (!input.empty()) ::unlink(input.c_str());
     if (!ok) {

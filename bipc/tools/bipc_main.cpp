@@ -13,6 +13,7 @@
 #include "bipc/ir/ir_json.h"
 #include "bipc/ir/ir_text.h"
 #include "bipc/options.h"
+#include "bipc/output_file.h"
 
 namespace {
 
@@ -33,20 +34,6 @@ bool report(const FrontendResult& result) {
 int run_check(const FrontendOptions& options) {
   FrontendResult result = run_frontend(options, /*need_system=*/false);
   return report(result) ? kOk : kInputError;
-}
-
-/// Writes `text` to `path` through a temporary file, so a failure leaves nothing half-written.
-bool write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out.good()) {
-      std::remove(temporary.c_str());
-      return false;
-    }
-  }
-  return std::rename(temporary.c_str(), path.c_str()) == 0;
 }
 
 int run_dot(const FrontendOptions& options, const std::string& output) {
@@ -74,8 +61,9 @@ int run_ir(const FrontendOptions& options, const std::string& output, bool json_
     std::cout << json;
     return kOk;
   }
-  if (!write_file_atomically(output, json)) {
-    std::cerr << "bipc: error: cannot write '" << output << "'\n";
+  std::string error;
+  if (!write_file_atomically(output, json, error)) {
+    std::cerr << "bipc: error: " << error << "\n";
     return kInputError;
   }
   return kOk;

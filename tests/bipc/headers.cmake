@@ -3,6 +3,7 @@ set(BIPC_PUBLIC_HEADERS
   bipc/bipc.h
   bipc/diagnostics.h
   bipc/options.h
+  bipc/output_file.h
   bipc/timing.h
   bipc/ast/ast.h
   bipc/ir/ir.h
