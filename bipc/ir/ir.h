@@ -283,6 +283,12 @@ struct ConnectorInstance {
   Index parent = 0;
   /// Per port parameter, the ports it may bind (more than one through merged exports).
   std::vector<std::vector<PortRef>> bound;
+  /// Per port parameter, the binding as written (`holder.port`), which traces print.
+  std::vector<std::string> bound_names;
+  /// Per port parameter, whether the binding reaches a connector's export through a compound's
+  /// exported port: engines then see only the sub-connector's maximal interactions, as the
+  /// Verimag engine's compound export ports offer them.
+  std::vector<bool> bound_through_compound;
   Index bound_by = kNone;  // the connector whose port binds this one's export, if any
   /// Every connector binding this one's export, in instance order (bound_by is the first). An
   /// export may feed several connectors, as an atom port may (BIP2 language reference).

@@ -1,0 +1,90 @@
+// Evaluation of the IR's stack code: plain values for actions and data guards, and time sets
+// for guards over clocks (the interval of dates at which the guard holds).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/externs.h"
+#include "engines/time_value.h"
+#include "engines/value.h"
+
+namespace smcbip::engines {
+
+/// A clock of a running atom: its value `value_at` (in its unit) at date `since`, growing at
+/// `rate` units per unit of time.
+struct ClockState {
+  double value_at = 0.0;
+  TimeValue since = 0;
+  double rate = 1.0;
+};
+
+/// Where code finds the slots of its context. Port parameters go through `port_slot` because a
+/// connector's port may stand for an atom's data or a sub-connector's exported data.
+struct Frame {
+  Val* atom_data = nullptr;
+  const Val* atom_params = nullptr;
+  ClockState* clocks = nullptr;
+  const TimeValue* clock_units = nullptr;  // nanoseconds per unit of each clock
+  Val* connector_data = nullptr;
+  Val* (*port_slot)(const void* context, bipc::ir::Index port, std::uint16_t arg) = nullptr;
+  const void* port_context = nullptr;
+  Val* (*instance_slot)(const void* context, bipc::ir::Index atom, std::uint16_t slot) = nullptr;
+  const void* instance_context = nullptr;
+  TimeValue now = 0;
+};
+
+/// A run-time fault of model code (division by zero, unknown extern), reported as an error of
+/// the run naming the atom or connector.
+struct CodeFault {
+  std::string message;
+};
+
+/// The extern functions a system's calls resolve to, looked up once per model.
+struct BoundFunctions {
+  std::vector<const Externs::Function*> functions;  // per System::functions entry
+  std::vector<std::vector<ValueKind>> arg_kinds;
+  std::vector<std::uint64_t> string_ids;  // per System::strings entry, interned
+};
+
+/// Resolves the system's extern functions against a registry and interns its string literals;
+/// an error message names the first function without an implementation.
+std::string bind_functions(const bipc::ir::System& system, const Externs& externs,
+                           StringPool& strings, BoundFunctions& out);
+
+/// Executes code over one frame. Not thread-safe: one evaluator per thread.
+class CodeEvaluator {
+ public:
+  CodeEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
+                CallContext& call);
+
+  /// Runs an expression (an empty one is `true`) and returns its value.
+  Val evaluate(const bipc::ir::Code& code, const Frame& frame);
+  bool holds(const bipc::ir::Code& code, const Frame& frame) {
+    return code.empty() || evaluate(code, frame).b;
+  }
+  /// Runs a statement block.
+  void execute(const bipc::ir::Code& code, const Frame& frame);
+  /// The dates (absolute, at or after frame.now or not) at which a guard over clocks holds,
+  /// with data read as they are now. Empty code holds always.
+  Interval holds_when(const bipc::ir::Code& code, const Frame& frame);
+
+  /// The value of a clock at a date, in the clock's unit.
+  static double clock_value(const ClockState& clock, TimeValue unit, TimeValue at) {
+    return clock.value_at + clock.rate * static_cast<double>(at - clock.since) /
+                                static_cast<double>(unit);
+  }
+
+ private:
+  void run(const bipc::ir::Code& code, const Frame& frame);
+  Val call(const bipc::ir::Instr& in);
+
+  const bipc::ir::System& system_;
+  const BoundFunctions& functions_;
+  CallContext& call_;
+  std::vector<Val> stack_;
+};
+
+}  // namespace smcbip::engines

@@ -1,0 +1,42 @@
+// Command-line options of a simulation, declared once for `smcbip simulate` and for generated
+// executables.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "engines/engines.h"
+
+namespace smcbip::engines {
+
+/// Registers the options of `smcbip simulate` on a (sub)command.
+inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
+  app.add_option("--engine", options.engine, "scheduler")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, EngineKind>{{"reference", EngineKind::Reference},
+                                            {"optimised", EngineKind::Optimised},
+                                            {"optimized", EngineKind::Optimised},
+                                            {"multithread", EngineKind::Multithread}},
+          CLI::ignore_case));
+  app.add_option("--threads", options.threads, "worker threads of the multithread engine")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--seed", options.seed, "seed of the run's random stream");
+  app.add_option("-l,--limit", options.limit, "stop after this many steps")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--real-time", options.real_time, "follow the platform clock");
+  app.add_flag("-a,--asap", options.asap, "plan each item at its earliest date");
+  app.add_flag("-f,--first-enabled", options.first_enabled,
+               "choose among the items that can run first");
+  app.add_flag("--relaxed", options.relaxed, "real time: tolerate late deadlines");
+  app.add_flag("--disable-maximal-progress", options.disable_maximal_progress,
+               "do not restrict connectors to their maximal interactions");
+  app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
+  app.add_flag("-s,--silent", options.silent, "print no engine trace (errors still)");
+  app.add_flag("--explore", options.explore, "enumerate the reachable states (untimed)");
+  app.add_option("--trace", options.trace, "trace format")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
+                                             {"jsonl", TraceFormat::Jsonl}},
+          CLI::ignore_case));
+}
+
+}  // namespace smcbip::engines

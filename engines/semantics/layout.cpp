@@ -1,0 +1,264 @@
+// Layout of run states and static tables of a system.
+#include "engines/semantics/layout.h"
+
+#include <algorithm>
+#include <functional>
+
+namespace smcbip::engines {
+
+namespace {
+
+using bipc::ir::DefineNode;
+using bipc::ir::System;
+
+Val to_val(const bipc::ir::Value& v, StringPool* strings) {
+  switch (v.kind) {
+    case bipc::ir::ValueKind::Bool:
+      return make_bool(v.b);
+    case bipc::ir::ValueKind::Float:
+      return make_float(v.f);
+    case bipc::ir::ValueKind::String: {
+      Val x;
+      x.s = strings ? strings->intern(v.s) : 0;
+      return x;
+    }
+    default:
+      return make_int(v.i);
+  }
+}
+
+bool has_trigger(const DefineNode& node) {
+  for (const DefineNode& child : node.children) {
+    if (child.trigger) return true;
+  }
+  return false;
+}
+
+/// Depth-first enumeration of presence variables; `work` holds what is still to expand, front
+/// last (a stack), each a node with its presence or a child whose presence is to be chosen.
+struct Enumerator {
+  struct Item {
+    const DefineNode* node;
+    bool present;
+    bool choose;  // presence to be iterated over `domain`
+    bool domain_one, domain_zero;
+  };
+  std::vector<PortSet>& out;
+
+  void run(std::vector<Item> work, PortSet ports) {
+    if (work.empty()) {
+      if (ports != 0) out.push_back(ports);
+      return;
+    }
+    Item item = work.back();
+    work.pop_back();
+    if (item.choose) {
+      if (item.domain_one) {
+        auto next = work;
+        next.push_back({item.node, true, false, false, false});
+        run(std::move(next), ports);
+      }
+      if (item.domain_zero) {
+        work.push_back({item.node, false, false, false, false});
+        run(std::move(work), ports);
+      }
+      return;
+    }
+    const DefineNode& node = *item.node;
+    if (node.children.empty()) {
+      if (item.present && node.port < 64) ports |= PortSet{1} << node.port;
+      run(std::move(work), ports);
+      return;
+    }
+    if (!has_trigger(node)) {
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
+        work.push_back({&*it, item.present, false, false, false});
+      }
+      run(std::move(work), ports);
+      return;
+    }
+    std::size_t triggers = 0;
+    for (const DefineNode& child : node.children) triggers += child.trigger ? 1 : 0;
+    const std::size_t rounds = item.present ? triggers : 1;
+    for (std::size_t t = 0; t < rounds; ++t) {
+      auto next = work;
+      std::vector<Item> children;
+      std::size_t trigger_index = 0;
+      for (const DefineNode& child : node.children) {
+        Item c{&child, false, true, false, true};
+        if (item.present) {
+          if (child.trigger) {
+            c.domain_one = trigger_index >= t;
+            c.domain_zero = trigger_index != t;
+            ++trigger_index;
+          } else {
+            c.domain_one = true;
+          }
+        }
+        children.push_back(c);
+      }
+      for (auto it = children.rbegin(); it != children.rend(); ++it) next.push_back(*it);
+      run(std::move(next), ports);
+    }
+  }
+};
+
+void add_listing(const System& system, Index compound, Layout& layout) {
+  const bipc::ir::CompoundInstance& c = system.compounds[compound];
+  auto last = [](const std::string& path) {
+    const auto dot = path.rfind('.');
+    return dot == std::string::npos ? path : path.substr(dot + 1);
+  };
+  std::vector<Index> subs = c.compounds;
+  std::sort(subs.begin(), subs.end(), [&](Index a, Index b) {
+    return last(system.compounds[a].path) < last(system.compounds[b].path);
+  });
+  for (Index sub : subs) add_listing(system, sub, layout);
+  std::vector<Index> connectors;
+  for (Index k : c.connectors) {
+    if (!system.connector_types[system.connectors[k].type].export_name) connectors.push_back(k);
+  }
+  std::sort(connectors.begin(), connectors.end(), [&](Index a, Index b) {
+    return last(system.connectors[a].path) < last(system.connectors[b].path);
+  });
+  layout.listed_connectors.insert(layout.listed_connectors.end(), connectors.begin(),
+                                  connectors.end());
+}
+
+/// Atom ports of one kind, recursively in component-name order (atoms and compounds together).
+void add_atom_ports(const System& system, Index compound, bool external,
+                    std::vector<std::pair<Index, Index>>& out) {
+  const bipc::ir::CompoundInstance& c = system.compounds[compound];
+  auto last = [](const std::string& path) {
+    const auto dot = path.rfind('.');
+    return dot == std::string::npos ? path : path.substr(dot + 1);
+  };
+  std::vector<std::pair<std::string, std::pair<bool, Index>>> children;
+  for (Index a : c.atoms) children.push_back({last(system.atoms[a].path), {true, a}});
+  for (Index s : c.compounds) children.push_back({last(system.compounds[s].path), {false, s}});
+  std::sort(children.begin(), children.end());
+  for (const auto& [name, child] : children) {
+    if (!child.first) {
+      add_atom_ports(system, child.second, external, out);
+      continue;
+    }
+    const bipc::ir::AtomType& type = system.atom_types[system.atoms[child.second].type];
+    std::vector<Index> ports;
+    for (Index p = 0; p < type.ports.size(); ++p) {
+      const bipc::ir::Port& port = type.ports[p];
+      if (external ? port.is_extern : (!port.exported && !port.is_extern)) ports.push_back(p);
+    }
+    std::sort(ports.begin(), ports.end(),
+              [&](Index x, Index y) { return type.ports[x].name < type.ports[y].name; });
+    for (Index p : ports) out.push_back({child.second, p});
+  }
+}
+
+/// The port set a priority side names, or an error.
+bool side_ports(const System& system, const bipc::ir::PatternSide& side, PortSet& out) {
+  out = 0;
+  if (side.connector == bipc::ir::kNone || side.all_ports) return true;
+  const bipc::ir::ConnectorInstance& k = system.connectors[side.connector];
+  for (const bipc::ir::PortRef& ref : side.ports) {
+    bool found = false;
+    for (std::size_t i = 0; i < k.bound.size() && !found; ++i) {
+      if (std::find(k.bound[i].begin(), k.bound[i].end(), ref) != k.bound[i].end()) {
+        out |= PortSet{1} << i;
+        found = true;
+      }
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<PortSet> defined_interactions(const std::vector<DefineNode>& define) {
+  std::vector<PortSet> out;
+  DefineNode root;
+  root.children = define;
+  Enumerator enumerator{out};
+  enumerator.run({{&root, true, false, false, false}}, 0);
+  return out;
+}
+
+std::string build_layout(const System& system, Layout& layout) {
+  layout = Layout{};
+  for (const bipc::ir::AtomInstance& atom : system.atoms) {
+    const bipc::ir::AtomType& type = system.atom_types[atom.type];
+    layout.atom_data.push_back(layout.data_size);
+    layout.data_size += type.data.size();
+    layout.atom_places.push_back(layout.place_count);
+    layout.place_count += type.places.size();
+    layout.atom_clocks.push_back(layout.clock_count);
+    layout.clock_count += type.clocks.size();
+    for (const bipc::ir::Clock& clock : type.clocks) {
+      layout.clock_units.push_back(nanoseconds_per(clock.unit));
+    }
+    layout.atom_params.push_back(layout.params.size());
+    for (const bipc::ir::Value& v : atom.params) layout.params.push_back(to_val(v, nullptr));
+    layout.atom_names.push_back(system.root_name + "." + atom.path);
+    for (const bipc::ir::Port& port : type.ports) {
+      if (port.stochastic) layout.stochastic = true;
+    }
+  }
+  layout.timed = layout.clock_count > 0;
+  for (Index k = 0; k < system.connectors.size(); ++k) {
+    const bipc::ir::ConnectorInstance& connector = system.connectors[k];
+    const bipc::ir::ConnectorType& type = system.connector_types[connector.type];
+    if (type.ports.size() > 64) {
+      return "connector '" + connector.path + "' has more than 64 ports; not supported";
+    }
+    layout.connector_data.push_back(layout.data_size);
+    layout.data_size += type.data.size();
+    std::vector<DefinedInteraction> defined;
+    for (PortSet ports : defined_interactions(type.define)) {
+      DefinedInteraction d{ports, -1};
+      for (std::size_t i = 0; i < type.interactions.size(); ++i) {
+        PortSet on = 0;
+        for (Index p : type.interactions[i].ports) on |= PortSet{1} << p;
+        if (on == ports) {
+          d.code = static_cast<int>(i);
+          break;
+        }
+      }
+      defined.push_back(d);
+    }
+    layout.defined.push_back(std::move(defined));
+    // Top level: not bound by another connector of its own compound.
+    bool top = true;
+    for (Index by : connector.bound_by_all) {
+      if (system.connectors[by].parent == connector.parent) top = false;
+    }
+    layout.top_level.push_back(top);
+    layout.connector_names.push_back(system.root_name + "." + connector.path);
+  }
+  add_listing(system, 0, layout);
+  add_atom_ports(system, 0, false, layout.internal_ports);
+  add_atom_ports(system, 0, true, layout.extern_ports);
+  layout.rules.resize(system.compounds.size());
+  layout.rules_by_low.resize(system.connectors.size());
+  for (Index c = 0; c < system.compounds.size(); ++c) {
+    const auto& priorities = system.compounds[c].priorities;
+    for (Index r = 0; r < priorities.size(); ++r) {
+      PriorityRule rule;
+      rule.compound = c;
+      rule.rule = r;
+      rule.low_connector = priorities[r].low.connector;
+      rule.high_connector = priorities[r].high.connector;
+      if (!side_ports(system, priorities[r].low, rule.low) ||
+          !side_ports(system, priorities[r].high, rule.high)) {
+        return "priority '" + priorities[r].name + "' names a port its connector does not bind";
+      }
+      if (rule.low_connector != bipc::ir::kNone && priorities[r].low.all_ports) {
+        const auto n = system.connectors[rule.low_connector].bound.size();
+        rule.low = n >= 64 ? ~PortSet{0} : (PortSet{1} << n) - 1;
+      }
+      layout.rules[c].push_back(rule);
+    }
+  }
+  return {};
+}
+
+}  // namespace smcbip::engines

@@ -1,0 +1,873 @@
+// The BIP semantics of one run: atom offers, connector interactions with maximal progress and
+// priorities, timing constraints, and execution. Follows the Verimag reference engine.
+#include "engines/semantics/runtime.h"
+
+#include "engines/engines.h"
+
+#include <algorithm>
+#include <bit>
+#include <functional>
+#include <sstream>
+
+namespace smcbip::engines {
+
+using bipc::Urgency;
+using bipc::ir::AtomType;
+using bipc::ir::kNone;
+
+namespace {
+
+bool reads_clock(const bipc::ir::Code& code) {
+  for (const bipc::ir::Instr& in : code.instrs) {
+    if (in.op == bipc::ir::Op::Load && in.scope == bipc::ir::Scope::Clock) return true;
+  }
+  return false;
+}
+
+Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
+
+Constraint intersect(const Constraint& a, const Constraint& b) {
+  return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
+}
+
+/// The urgent part of a constraint: lazy none, delayable its closed right end, eager all of it.
+Interval urgent_part(const Constraint& c) {
+  switch (c.urgency) {
+    case Urgency::Lazy:
+      return Interval::none();
+    case Urgency::Delayable:
+      if (c.interval.right == kPlusInfinity || c.interval.right_open || c.interval.empty()) {
+        return Interval::none();
+      }
+      return Interval::point(c.interval.right);
+    case Urgency::Eager:
+      return c.interval;
+  }
+  return Interval::none();
+}
+
+/// How long time may pass from `now` without missing the constraint's urgency.
+Interval wait(const Constraint& c, TimeValue now) {
+  const Interval urgent = urgent_part(c);
+  if (urgent.empty()) return Interval::from(now);
+  if (urgent.contains(now)) return Interval::point(now);
+  // An open left end still bounds the wait at that end (the reference engine's Interval::wait),
+  // which makes `x > 5` eager a time-lock at 5.
+  if (now <= urgent.left) return {now, urgent.left, false, false};
+  return Interval::from(now);
+}
+
+struct PortContext {
+  Runtime* runtime;
+  const InteractionValue* value;
+};
+
+}  // namespace
+
+struct RuntimeDetail {
+  static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
+    const auto& c = *static_cast<const PortContext*>(context);
+    const InteractionValue& v = *c.value;
+    const PortSet below = port < 64 ? (v.ports & ((PortSet{1} << port) - 1)) : 0;
+    const PortValue& pv = v.choice[static_cast<std::size_t>(std::popcount(below))];
+    Runtime& r = *c.runtime;
+    if (pv.from_atom) {
+      const AtomType& type = r.system_.atom_types[r.system_.atoms[pv.atom].type];
+      return &r.state_.data[r.layout_.atom_data[pv.atom] + type.ports[pv.port].data[arg]];
+    }
+    InteractionValue& sub = r.values_[pv.sub];
+    const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
+    return &sub.data[type.export_data[arg]];
+  }
+  static Val* instance_slot(const void* context, Index atom, std::uint16_t slot) {
+    Runtime& r = *const_cast<Runtime*>(static_cast<const Runtime*>(context));
+    return &r.state_.data[r.layout_.atom_data[atom] + slot];
+  }
+};
+
+Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
+                 const BoundFunctions& functions, StringPool& strings, std::ostream& out,
+                 RandomStream& random, bool maximal_progress)
+    : system_(system),
+      layout_(layout),
+      strings_(strings),
+      out_(out),
+      call_{out, strings, &random, {}},
+      eval_(system, functions, call_),
+      maximal_progress_(maximal_progress) {
+  for (Index a = 0; a < system.atoms.size(); ++a) {
+    port_offset_.push_back(port_values_.size());
+    port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
+  }
+  atom_invariant_.assign(system.atoms.size(), Interval::all());
+}
+
+bool Runtime::fail(int code, std::string message) {
+  error_ = {code, std::move(message)};
+  return false;
+}
+
+Frame Runtime::atom_frame(Index atom) {
+  Frame f;
+  f.atom_data = state_.data.data() + layout_.atom_data[atom];
+  f.atom_params = layout_.params.data() + layout_.atom_params[atom];
+  f.clocks = state_.clocks.data() + layout_.atom_clocks[atom];
+  f.clock_units = layout_.clock_units.data() + layout_.atom_clocks[atom];
+  f.instance_slot = &RuntimeDetail::instance_slot;
+  f.instance_context = this;
+  f.now = state_.now;
+  return f;
+}
+
+bool Runtime::initialize() {
+  state_ = RunState{};
+  state_.data.assign(layout_.data_size, make_int(0));
+  state_.marking.assign(layout_.place_count, 0);
+  state_.clocks.assign(layout_.clock_count, ClockState{});
+  state_.resume_pending.assign(system_.atoms.size(), 0);
+  state_.resume_interval.assign(system_.atoms.size(), Interval::all());
+  try {
+    for (Index a = 0; a < system_.atoms.size(); ++a) {
+      const AtomType& type = system_.atom_types[system_.atoms[a].type];
+      const Frame f = atom_frame(a);
+      for (std::size_t d = 0; d < type.data.size(); ++d) {
+        if (!type.data[d].initial_value.empty()) {
+          f.atom_data[d] = eval_.evaluate(type.data[d].initial_value, f);
+        }
+      }
+    }
+    for (Index k = 0; k < system_.connectors.size(); ++k) {
+      const auto& type = system_.connector_types[system_.connectors[k].type];
+      Frame f;
+      f.connector_data = state_.data.data() + layout_.connector_data[k];
+      for (std::size_t d = 0; d < type.data.size(); ++d) {
+        if (!type.data[d].initial_value.empty()) {
+          f.connector_data[d] = eval_.evaluate(type.data[d].initial_value, f);
+        }
+      }
+    }
+    // Components initialise in name order, level by level, as the reference engine's maps do.
+    std::vector<Index> order(system_.atoms.size());
+    for (Index a = 0; a < order.size(); ++a) order[a] = a;
+    std::sort(order.begin(), order.end(), [&](Index x, Index y) {
+      return layout_.atom_names[x] < layout_.atom_names[y];
+    });
+    for (Index a : order) {
+      const AtomType& type = system_.atom_types[system_.atoms[a].type];
+      for (Index p : type.initial_places) state_.marking[layout_.atom_places[a] + p] = 1;
+      eval_.execute(type.initial_action, atom_frame(a));
+      if (type.initial_resume) {
+        state_.resume_pending[a] = 1;
+        state_.resume_interval[a] = eval_.holds_when(type.initial_resume->guard, atom_frame(a));
+      }
+      if (!check_invariants(a) || !run_internal_transitions(a)) return false;
+      if (!state_.resume_pending[a] && !update_atom(a)) return false;
+    }
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+  return check_compound_priority_cycles();
+}
+
+bool Runtime::check_invariants(Index atom) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  const std::size_t base = layout_.atom_places[atom];
+  atom_invariant_[atom] = Interval::all();
+  for (const bipc::ir::Invariant& inv : type.invariants) {
+    bool applies = true;
+    if (!inv.places.empty()) {
+      std::size_t marked = 0;
+      for (Index p : inv.places) marked += state_.marking[base + p];
+      applies = marked == inv.places.size();
+      if (applies && inv.at) {
+        std::size_t total = 0;
+        for (std::size_t p = 0; p < type.places.size(); ++p) total += state_.marking[base + p];
+        applies = total == inv.places.size();
+      }
+    }
+    if (!applies) continue;
+    const Frame f = atom_frame(atom);
+    bool holds = true;
+    if (reads_clock(inv.guard)) {
+      const Interval when = eval_.holds_when(inv.guard, f);
+      atom_invariant_[atom] = atom_invariant_[atom].intersect(when);
+      holds = when.contains(state_.now);
+    } else {
+      holds = eval_.holds(inv.guard, f);
+    }
+    if (!holds) {
+      const std::string& path = system_.atoms[atom].path;
+      const std::string short_name = path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1);
+      return fail(5, "the invariant " + inv.name + " of component " + short_name +
+                         " has been violated!");
+    }
+  }
+  return true;
+}
+
+bool Runtime::fire_transition(Index atom, Index transition, Index label) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  const bipc::ir::Transition& t = type.transitions[transition];
+  const std::size_t base = layout_.atom_places[atom];
+  for (Index p : t.from) state_.marking[base + p] = 0;
+  for (Index p : t.to) {
+    if (state_.marking[base + p]) {
+      const bool labelled = label != kNone && !type.ports[label].is_extern;
+      return fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
+                         (labelled ? "executing a transition labelled by " + type.ports[label].name
+                                   : std::string("executing an internal transition")) +
+                         ")");
+    }
+    state_.marking[base + p] = 1;
+  }
+  eval_.execute(t.action, atom_frame(atom));
+  if (t.resume) {
+    state_.resume_pending[atom] = 1;
+    state_.resume_interval[atom] = eval_.holds_when(t.resume->guard, atom_frame(atom));
+  }
+  return check_invariants(atom);
+}
+
+bool Runtime::run_internal_transitions(Index atom) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  const std::size_t base = layout_.atom_places[atom];
+  for (;;) {
+    Index enabled = kNone;
+    for (Index t = 0; t < type.transitions.size(); ++t) {
+      const bipc::ir::Transition& tr = type.transitions[t];
+      if (tr.port != kNone) continue;
+      bool marked = true;
+      for (Index p : tr.from) marked = marked && state_.marking[base + p];
+      if (!marked || !eval_.holds(tr.guard, atom_frame(atom))) continue;
+      if (enabled != kNone) {
+        return fail(1, "non-deterministic choice between internal transitions in " +
+                           layout_.atom_names[atom] + "!");
+      }
+      enabled = t;
+    }
+    if (enabled == kNone) return true;
+    if (!fire_transition(atom, enabled, kNone)) return false;
+  }
+}
+
+bool Runtime::update_atom(Index atom) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  const std::size_t base = layout_.atom_places[atom];
+  std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
+  for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
+  const Frame f = atom_frame(atom);
+  for (Index t = 0; t < type.transitions.size(); ++t) {
+    const bipc::ir::Transition& tr = type.transitions[t];
+    if (tr.port == kNone) continue;
+    bool marked = true;
+    for (Index p : tr.from) marked = marked && state_.marking[base + p];
+    if (!marked) continue;
+    const Interval when = eval_.holds_when(tr.guard, f);
+    if (when.empty()) continue;
+    if (values[tr.port]) {
+      if (type.ports[tr.port].is_extern) {
+        return fail(1, "non-deterministic choice between internal transitions in " +
+                           layout_.atom_names[atom] + "!");
+      }
+      return fail(1, "non-deterministic choice between transitions labelled by " +
+                         type.ports[tr.port].name + " in " + layout_.atom_names[atom] + "!");
+    }
+    values[tr.port] = AtomPortValue{t, {when, tr.urgency}};
+  }
+  if (type.priorities.empty()) return true;
+  if (!check_atom_priority_cycle(atom)) return false;
+  // A port is disabled when a chain of active rules from it ends at an enabled port.
+  const std::size_t n = type.ports.size();
+  const std::size_t rules = type.priorities.size();
+  std::vector<bool> active(rules);
+  for (std::size_t r = 0; r < rules; ++r) active[r] = eval_.holds(type.priorities[r].guard, f);
+  auto in_low = [&](std::size_t r, std::size_t p) {
+    const auto& rule = type.priorities[r];
+    return rule.low == kNone ? rule.high != p : rule.low == p;
+  };
+  auto in_high = [&](std::size_t r, std::size_t p) {
+    const auto& rule = type.priorities[r];
+    return rule.high == kNone ? rule.low != p : rule.high == p;
+  };
+  auto high_enabled = [&](std::size_t r) {
+    for (std::size_t q = 0; q < n; ++q) {
+      if (in_high(r, q) && values[q] && !type.ports[q].is_extern) return true;
+    }
+    return false;
+  };
+  std::vector<bool> disabled(n, false);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!values[p] || type.ports[p].is_extern) continue;
+    std::vector<bool> seen(rules, false);
+    std::vector<std::size_t> todo;
+    for (std::size_t r = 0; r < rules; ++r) {
+      if (active[r] && in_low(r, p)) {
+        seen[r] = true;
+        todo.push_back(r);
+      }
+    }
+    while (!todo.empty() && !disabled[p]) {
+      const std::size_t r = todo.back();
+      todo.pop_back();
+      if (high_enabled(r)) {
+        disabled[p] = true;
+        break;
+      }
+      for (std::size_t r2 = 0; r2 < rules; ++r2) {
+        if (seen[r2] || !active[r2]) continue;
+        bool chained = false;
+        for (std::size_t q = 0; q < n && !chained; ++q) chained = in_high(r, q) && in_low(r2, q);
+        if (chained) {
+          seen[r2] = true;
+          todo.push_back(r2);
+        }
+      }
+    }
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    if (disabled[p]) values[p].reset();
+  }
+  return true;
+}
+
+bool Runtime::check_atom_priority_cycle(Index atom) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  const std::size_t rules = type.priorities.size();
+  const std::size_t n = type.ports.size();
+  const Frame f = atom_frame(atom);
+  std::vector<bool> active(rules);
+  for (std::size_t r = 0; r < rules; ++r) active[r] = eval_.holds(type.priorities[r].guard, f);
+  auto chained = [&](std::size_t r, std::size_t r2) {
+    const auto& a = type.priorities[r];
+    const auto& b = type.priorities[r2];
+    for (std::size_t q = 0; q < n; ++q) {
+      const bool high = a.high == kNone ? a.low != q : a.high == q;
+      const bool low = b.low == kNone ? b.high != q : b.low == q;
+      if (high && low) return true;
+    }
+    return false;
+  };
+  // Depth-first search for a cycle among active rules (colours: 0 new, 1 on path, 2 done).
+  std::vector<int> colour(rules, 0);
+  std::function<bool(std::size_t)> cyclic = [&](std::size_t r) {
+    colour[r] = 1;
+    for (std::size_t r2 = 0; r2 < rules; ++r2) {
+      if (!active[r2] || !chained(r, r2)) continue;
+      if (colour[r2] == 1 || (colour[r2] == 0 && cyclic(r2))) return true;
+    }
+    colour[r] = 2;
+    return false;
+  };
+  for (std::size_t r = 0; r < rules; ++r) {
+    if (active[r] && colour[r] == 0 && cyclic(r)) return fail(4, "cycle in priorities! ()");
+  }
+  return true;
+}
+
+bool Runtime::rule_guard(const PriorityRule& rule) {
+  const bipc::ir::Priority& p = system_.compounds[rule.compound].priorities[rule.rule];
+  if (p.guard.empty()) return true;
+  Frame f;
+  f.instance_slot = &RuntimeDetail::instance_slot;
+  f.instance_context = this;
+  f.now = state_.now;
+  return eval_.holds(p.guard, f);
+}
+
+namespace {
+
+bool subset(PortSet a, PortSet b) { return (a & ~b) == 0; }
+
+std::string interaction_name(const bipc::ir::System& system, Index connector, PortSet ports) {
+  const std::string& path = system.connectors[connector].path;
+  std::string text = path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1) + ":";
+  const auto& type = system.connector_types[system.connectors[connector].type];
+  for (std::size_t i = 0; i < type.ports.size(); ++i) {
+    if (ports & (PortSet{1} << i)) text += " " + type.ports[i].first;
+  }
+  return text;
+}
+
+}  // namespace
+
+bool Runtime::check_compound_priority_cycles() {
+  for (Index c = 0; c < layout_.rules.size(); ++c) {
+    const std::vector<PriorityRule>& rules = layout_.rules[c];
+    if (rules.empty()) continue;
+    std::vector<bool> active(rules.size());
+    for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
+    using Node = std::pair<Index, PortSet>;
+    auto applies_low = [&](const PriorityRule& rule, const Node& x) {
+      if (rule.low_connector == kNone) {
+        return layout_.top_level[x.first] && x.first != rule.high_connector;
+      }
+      return x.first == rule.low_connector &&
+             (x.second == rule.low || (maximal_progress_ && subset(x.second, rule.low)));
+    };
+    auto highs = [&](const PriorityRule& rule) {
+      std::vector<Node> out;
+      auto all_of = [&](Index k) {
+        for (const DefinedInteraction& d : layout_.defined[k]) out.push_back({k, d.ports});
+      };
+      if (rule.high_connector == kNone) {
+        for (Index k : system_.compounds[c].connectors) {
+          if (layout_.top_level[k] && k != rule.low_connector) all_of(k);
+        }
+      } else if (rule.high == 0) {
+        all_of(rule.high_connector);
+      } else {
+        out.push_back({rule.high_connector, rule.high});
+      }
+      return out;
+    };
+    auto lows = [&](const PriorityRule& rule) {
+      std::vector<Node> out;
+      if (rule.low_connector != kNone) {
+        out.push_back({rule.low_connector, rule.low});
+        return out;
+      }
+      for (Index k : system_.compounds[c].connectors) {
+        if (!layout_.top_level[k] || k == rule.high_connector) continue;
+        for (const DefinedInteraction& d : layout_.defined[k]) out.push_back({k, d.ports});
+      }
+      return out;
+    };
+    std::vector<Node> cycle;
+    std::function<bool(std::vector<Node>&, int)> search = [&](std::vector<Node>& path, int depth) {
+      if (depth > 64) return false;
+      const Node x = path.back();
+      for (std::size_t r = 0; r < rules.size(); ++r) {
+        if (!active[r] || !applies_low(rules[r], x)) continue;
+        for (const Node& d : highs(rules[r])) {
+          std::vector<Node> next = path;
+          if (rules[r].low_connector != kNone && x != Node{rules[r].low_connector, rules[r].low}) {
+            next.push_back({rules[r].low_connector, rules[r].low});
+          }
+          next.push_back(d);
+          for (std::size_t i = 0; i + 1 < next.size(); ++i) {
+            if (next[i].first == d.first && subset(d.second, next[i].second)) {
+              cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
+              if (d != next[i]) cycle.push_back(next[i]);
+              return true;
+            }
+          }
+          if (search(next, depth + 1)) return true;
+        }
+      }
+      return false;
+    };
+    for (std::size_t r = 0; r < rules.size(); ++r) {
+      if (!active[r]) continue;
+      for (const Node& low : lows(rules[r])) {
+        std::vector<Node> path{low};
+        if (search(path, 0)) {
+          std::string text;
+          for (std::size_t i = 0; i < cycle.size(); ++i) {
+            text += (i ? " < " : "") + interaction_name(system_, cycle[i].first, cycle[i].second);
+          }
+          return fail(3, "cycle in priorities! (" + text + ")");
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Connector interactions.
+
+void Runtime::restrict_by(Constraint& c, const Constraint& dominator) const {
+  // A dominated value may only run where its dominator cannot (TimingConstraint::applyPriority
+  // of the reference engine): after the dominator's window if that meets the waiting window,
+  // else before it.
+  const Interval window = wait(c, state_.now);
+  const Interval meet = dominator.interval.intersect(window);
+  Interval allowed;
+  if (!meet.empty()) {
+    if (meet.right == kPlusInfinity) {
+      c.interval = Interval::none();
+      return;
+    }
+    allowed = {meet.right, kPlusInfinity, !meet.right_open, false};
+  } else if (dominator.interval.left != kMinusInfinity && state_.now < dominator.interval.left) {
+    allowed = {kMinusInfinity, dominator.interval.left, false, !dominator.interval.left_open};
+  } else {
+    if (dominator.interval.right == kPlusInfinity) {
+      c.interval = Interval::none();
+      return;
+    }
+    allowed = {dominator.interval.right, kPlusInfinity, !dominator.interval.right_open, false};
+  }
+  c.interval = c.interval.intersect(allowed);
+}
+
+bool Runtime::dominated_locally(const InteractionValue& low, const InteractionValue& high) const {
+  // low <= high: port set inclusion, and for each sub-connector port of low, its
+  // sub-interaction included in high's.
+  if (!subset(low.ports, high.ports)) return false;
+  for (std::size_t i = 0, j = 0; i < 64 && (low.ports >> i) != 0; ++i) {
+    if (!(low.ports & (PortSet{1} << i))) continue;
+    const PortValue& lv = low.choice[j++];
+    const PortSet below = high.ports & ((PortSet{1} << i) - 1);
+    const PortValue& hv = high.choice[static_cast<std::size_t>(std::popcount(below))];
+    if (lv.from_atom != hv.from_atom) return false;
+    if (!lv.from_atom && lv.sub != hv.sub &&
+        !dominated_locally(values_[lv.sub], values_[hv.sub])) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void Runtime::compute_connector(Index k) {
+  if (connector_done_[k]) return;
+  connector_done_[k] = 1;
+  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
+  const auto& type = system_.connector_types[connector.type];
+  const std::size_t n = connector.bound.size();
+  std::vector<std::vector<PortValue>> offers(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const bipc::ir::PortRef& ref : connector.bound[i]) {
+      if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
+        if (state_.resume_pending[ref.instance]) continue;
+        const auto& v = port_values_[port_offset_[ref.instance] + ref.port];
+        if (v) offers[i].push_back({true, ref.instance, ref.port, kNone, v->constraint});
+        continue;
+      }
+      compute_connector(ref.instance);
+      for (Index sub : connector_values_[ref.instance]) {
+        const InteractionValue& sv = values_[sub];
+        const Constraint& c = connector.bound_through_compound[i] ? sv.after : sv.raw;
+        if (connector.bound_through_compound[i] && c.interval.empty()) continue;
+        offers[i].push_back({false, 0, 0, sub, c});
+      }
+    }
+  }
+  std::vector<Index>& result = connector_values_[k];
+  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
+  for (std::uint32_t d = 0; d < defined.size(); ++d) {
+    const PortSet ports = defined[d].ports;
+    std::vector<std::size_t> members;
+    bool possible = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(ports & (PortSet{1} << i))) continue;
+      members.push_back(i);
+      possible = possible && !offers[i].empty();
+    }
+    if (!possible) continue;
+    const bipc::ir::InteractionCode* code =
+        defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)] : nullptr;
+    std::vector<std::size_t> pick(members.size(), 0);
+    for (;;) {
+      InteractionValue value;
+      value.connector = k;
+      value.defined = d;
+      value.ports = ports;
+      value.raw = Constraint{};
+      for (std::size_t m = 0; m < members.size(); ++m) {
+        const PortValue& pv = offers[members[m]][pick[m]];
+        value.choice.push_back(pv);
+        value.raw = intersect(value.raw, pv.constraint);
+      }
+      if (!value.raw.interval.empty()) {
+        value.data.assign(state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
+                          state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k] +
+                                                                            type.data.size()));
+        PortContext context{this, &value};
+        Frame f;
+        f.connector_data = value.data.data();
+        f.port_slot = &RuntimeDetail::port_slot;
+        f.port_context = &context;
+        f.now = state_.now;
+        if (!code || eval_.holds(code->guard, f)) {
+          if (code) eval_.execute(code->up, f);
+          value.after = value.raw;
+          result.push_back(static_cast<Index>(values_.size()));
+          values_.push_back(std::move(value));
+        }
+      }
+      // Next combination: the last port varies fastest (first port outermost).
+      std::size_t m = members.size();
+      while (m > 0) {
+        --m;
+        if (++pick[m] < offers[members[m]].size()) break;
+        pick[m] = 0;
+        if (m == 0) {
+          m = members.size() + 1;
+          break;
+        }
+      }
+      if (members.empty() || m == members.size() + 1) break;
+    }
+  }
+}
+
+void Runtime::apply_priorities(InteractionValue& value, Index k) {
+  // Maximal progress: every enabled value of the same connector strictly above this one.
+  if (maximal_progress_) {
+    for (Index w : connector_values_[k]) {
+      const InteractionValue& other = values_[w];
+      if (&other == &value) continue;
+      if (dominated_locally(value, other) && !dominated_locally(other, value)) {
+        restrict_by(value.after, other.raw);
+      }
+    }
+  }
+  const Index compound = system_.connectors[k].parent;
+  const std::vector<PriorityRule>& rules = layout_.rules[compound];
+  if (rules.empty()) return;
+  using Node = std::pair<Index, PortSet>;
+  auto applies_low = [&](const PriorityRule& rule, Index connector, PortSet ports) {
+    if (rule.low_connector == kNone) {
+      return layout_.top_level[connector] && connector != rule.high_connector;
+    }
+    return connector == rule.low_connector &&
+           (ports == rule.low || (maximal_progress_ && subset(ports, rule.low)));
+  };
+  std::vector<Node> visited;
+  std::function<void(Index, PortSet)> dominate = [&](Index connector, PortSet ports) {
+    if (std::find(visited.begin(), visited.end(), Node{connector, ports}) != visited.end()) return;
+    visited.push_back({connector, ports});
+    for (const PriorityRule& rule : rules) {
+      if (!applies_low(rule, connector, ports) || !rule_guard(rule)) continue;
+      std::vector<Node> highs;
+      auto all_of = [&](Index d) {
+        for (const DefinedInteraction& def : layout_.defined[d]) highs.push_back({d, def.ports});
+      };
+      if (rule.high_connector == kNone) {
+        for (Index d : system_.compounds[compound].connectors) {
+          if (layout_.top_level[d] && d != rule.low_connector) all_of(d);
+        }
+      } else if (rule.high == 0) {
+        all_of(rule.high_connector);
+      } else {
+        highs.push_back({rule.high_connector, rule.high});
+      }
+      for (const Node& h : highs) {
+        compute_connector(h.first);
+        for (Index w : connector_values_[h.first]) {
+          const InteractionValue& other = values_[w];
+          if (other.ports == h.second || (maximal_progress_ && subset(h.second, other.ports))) {
+            restrict_by(value.after, other.raw);
+          }
+        }
+        dominate(h.first, h.second);
+      }
+    }
+  };
+  dominate(k, value.ports);
+}
+
+bool Runtime::compute_items() {
+  values_.clear();
+  items_.clear();
+  connector_values_.assign(system_.connectors.size(), {});
+  connector_done_.assign(system_.connectors.size(), 0);
+  if (!check_compound_priority_cycles()) return false;
+  try {
+    // Compounds bottom-up: a compound export of a sub-connector needs its values after
+    // priorities. Deeper compounds have larger indices than their parents.
+    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) {
+      for (Index k : system_.compounds[c].connectors) compute_connector(k);
+      for (Index k : system_.compounds[c].connectors) {
+        for (Index v : connector_values_[k]) apply_priorities(values_[v], k);
+      }
+    }
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+  // Raw items; their windows are cut to the admissible waiting interval below.
+  for (Index k : layout_.listed_connectors) {
+    for (Index v : connector_values_[k]) {
+      if (!values_[v].after.interval.empty()) {
+        items_.push_back({Item::Kind::Interaction, v, 0, 0, values_[v].after});
+      }
+    }
+  }
+  for (const auto& [atom, port] : layout_.internal_ports) {
+    if (state_.resume_pending[atom]) continue;
+    const auto& v = port_values_[port_offset_[atom] + port];
+    if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint});
+  }
+  const Interval w = wait_interval();
+  std::vector<Item> listed;
+  for (Item item : items_) {
+    item.constraint.interval = item.constraint.interval.intersect(w);
+    if (!item.constraint.interval.empty()) listed.push_back(item);
+  }
+  items_ = std::move(listed);
+  return true;
+}
+
+Interval Runtime::wait_interval() const {
+  Interval w = Interval::from(state_.now);
+  for (Index k : layout_.listed_connectors) {
+    for (Index v : connector_values_[k]) {
+      if (!values_[v].after.interval.empty()) w = w.intersect(wait(values_[v].raw, state_.now));
+    }
+  }
+  for (const auto& [atom, port] : layout_.internal_ports) {
+    if (state_.resume_pending[atom]) continue;
+    const auto& v = port_values_[port_offset_[atom] + port];
+    if (v) w = w.intersect(wait(v->constraint, state_.now));
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    w = w.intersect(state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
+  }
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Execution.
+
+bool Runtime::execute_value(Index index) {
+  InteractionValue& value = values_[index];
+  const auto& type = system_.connector_types[system_.connectors[value.connector].type];
+  const int code = layout_.defined[value.connector][value.defined].code;
+  if (code >= 0) {
+    PortContext context{this, &value};
+    Frame f;
+    f.connector_data = value.data.data();
+    f.port_slot = &RuntimeDetail::port_slot;
+    f.port_context = &context;
+    f.now = state_.now;
+    eval_.execute(type.interactions[static_cast<std::size_t>(code)].down, f);
+  }
+  std::copy(value.data.begin(), value.data.end(),
+            state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[value.connector]));
+  // Ports run in the interaction's port order, depth first: a sub-connector's down comes after
+  // the atoms of earlier ports have executed (reference engine order).
+  for (const PortValue& pv : value.choice) {
+    if (pv.from_atom ? !fire_port(pv.atom, pv.port) : !execute_value(pv.sub)) return false;
+  }
+  return true;
+}
+
+bool Runtime::fire_port(Index atom, Index port) {
+  const auto& v = port_values_[port_offset_[atom] + port];
+  if (!v) return true;
+  if (!fire_transition(atom, v->transition, port) || !run_internal_transitions(atom)) return false;
+  return state_.resume_pending[atom] || update_atom(atom);
+}
+
+bool Runtime::execute(const Item& item, TimeValue at) {
+  state_.now = at;
+  try {
+    if (item.kind == Item::Kind::Interaction) return execute_value(item.value);
+    return fire_port(item.atom, item.port);
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+}
+
+/// Resumes atoms whose resume window holds `now`; returns false when one is already past.
+bool Runtime::resume_atoms(TimeValue now) {
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (!state_.resume_pending[a]) continue;
+    state_.resume_pending[a] = 0;
+    if (!update_atom(a)) return false;
+  }
+  state_.now = std::max(state_.now, now);
+  return true;
+}
+
+Interval Runtime::resume_window() const {
+  Interval w = Interval::all();
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (state_.resume_pending[a]) w = w.intersect(state_.resume_interval[a]);
+  }
+  return w;
+}
+
+std::string Runtime::format_ports(const InteractionValue& value) const {
+  const bipc::ir::ConnectorInstance& connector = system_.connectors[value.connector];
+  std::string text;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < connector.bound.size(); ++i) {
+    if (!(value.ports & (PortSet{1} << i))) continue;
+    const PortValue& pv = value.choice[j++];
+    if (!text.empty()) text += ' ';
+    text += connector.bound_names[i] + "(";
+    const bipc::ir::PortType* port_type = nullptr;
+    const Val* data = nullptr;
+    std::vector<Val> values;
+    if (pv.from_atom) {
+      const AtomType& type = system_.atom_types[system_.atoms[pv.atom].type];
+      const bipc::ir::Port& port = type.ports[pv.port];
+      port_type = &system_.port_types[port.type];
+      for (Index slot : port.data) values.push_back(state_.data[layout_.atom_data[pv.atom] + slot]);
+    } else {
+      const InteractionValue& sub = values_[pv.sub];
+      const auto& type = system_.connector_types[system_.connectors[sub.connector].type];
+      if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
+      for (Index slot : type.export_data) values.push_back(sub.data[slot]);
+    }
+    (void)data;
+    if (port_type) {
+      for (std::size_t p = 0; p < port_type->params.size() && p < values.size(); ++p) {
+        text += port_type->params[p].first + "=" +
+                format_value(values[p], port_type->params[p].second.kind) + ";";
+      }
+    }
+    text += ")";
+  }
+  return text;
+}
+
+std::string Runtime::format_value(Val v, bipc::ir::ValueKind kind) const {
+  switch (kind) {
+    case bipc::ir::ValueKind::Bool:
+      return v.b ? "true" : "false";
+    case bipc::ir::ValueKind::Float: {
+      std::ostringstream s;
+      s << v.f;
+      return s.str();
+    }
+    case bipc::ir::ValueKind::String:
+      return strings_.text(v.s);
+    default:
+      return std::to_string(v.i);
+  }
+}
+
+}  // namespace smcbip::engines
+
+namespace smcbip::engines {
+
+std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
+  std::vector<std::string> lines;
+  auto late = [&](const Constraint& c) { return !wait(c, state_.now).contains(t); };
+  auto constraint_text = [](const Constraint& c) {
+    return format_interval(c.interval) + " " + urgency_name(c.urgency);
+  };
+  for (Index k : layout_.listed_connectors) {
+    for (Index v : connector_values_[k]) {
+      const InteractionValue& value = values_[v];
+      if (value.after.interval.empty() || !late(value.raw)) continue;
+      lines.push_back(layout_.connector_names[k] + ": " + format_ports(value) + " " +
+                      constraint_text(value.raw));
+    }
+  }
+  for (const auto& [atom, port] : layout_.internal_ports) {
+    if (state_.resume_pending[atom]) continue;
+    const auto& v = port_values_[port_offset_[atom] + port];
+    if (!v || !late(v->constraint)) continue;
+    const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+    lines.push_back(layout_.atom_names[atom] + "." + type.ports[port].name + " " +
+                    constraint_text(v->constraint));
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (!state_.resume_pending[a] && !atom_invariant_[a].contains(t)) {
+      lines.push_back(layout_.atom_names[a] + " invariant " + format_interval(atom_invariant_[a]));
+    }
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (state_.resume_pending[a] && !state_.resume_interval[a].contains(t)) {
+      lines.push_back(layout_.atom_names[a] + " resume " +
+                      format_interval(state_.resume_interval[a]));
+    }
+  }
+  return lines;
+}
+
+}  // namespace smcbip::engines

@@ -1,0 +1,55 @@
+// Model time: exact integer nanoseconds, intervals with open or closed ends, and the reference
+// engine's printed forms ("1s500ms", "[ 0, +INFTY [").
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "bipc/timing.h"
+
+namespace smcbip::engines {
+
+/// A point of model time in nanoseconds. The extreme values stand for -INFTY and +INFTY.
+using TimeValue = std::int64_t;
+inline constexpr TimeValue kPlusInfinity = std::numeric_limits<TimeValue>::max();
+inline constexpr TimeValue kMinusInfinity = std::numeric_limits<TimeValue>::min();
+
+/// Nanoseconds in one unit of a clock.
+TimeValue nanoseconds_per(bipc::TimeUnit unit);
+
+/// The reference engine's form: non-zero components `<d>day<h>hr<m>min<s>s<ms>ms<us>us<ns>ns`,
+/// `0` for zero, a leading `-` when negative, `-INFTY` / `+INFTY` for the infinities.
+std::string format_time(TimeValue t);
+
+/// A set of time points {t | left (<|<=) t (<|<=) right}; empty when left > right or when they
+/// are equal with an open end.
+struct Interval {
+  TimeValue left = kMinusInfinity;
+  TimeValue right = kPlusInfinity;
+  bool left_open = false;
+  bool right_open = false;
+
+  static Interval all() { return {}; }
+  static Interval none() { return {0, -1, false, false}; }
+  static Interval point(TimeValue t) { return {t, t, false, false}; }
+  static Interval from(TimeValue t) { return {t, kPlusInfinity, false, false}; }
+
+  bool empty() const;
+  bool contains(TimeValue t) const;
+  bool bounded() const { return right != kPlusInfinity; }
+  /// The smallest point of the set (for an open left end, the next nanosecond).
+  TimeValue first() const;
+  /// The largest point of the set (for an open right end, the previous nanosecond).
+  TimeValue last() const;
+  Interval intersect(const Interval& other) const;
+  bool operator==(const Interval&) const = default;
+};
+
+/// `[ left, right ]` with `]`/`[` turned for open ends, as the reference engine prints it.
+std::string format_interval(const Interval& interval);
+
+/// `lazy`, `delayable` or `eager`.
+const char* urgency_name(bipc::Urgency urgency);
+
+}  // namespace smcbip::engines

@@ -1,0 +1,2 @@
+# Unit tests of the stochastic area of the engines: random streams and firing-date distributions.
+list(APPEND ENGINES_TEST_SOURCES distributions_test.cpp)
