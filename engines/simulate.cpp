@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "engines/engines.h"
+#include "engines/explore.h"
 #include "engines/semantics/runtime.h"
 #include "engines/trace/text_trace.h"
 
@@ -40,6 +41,18 @@ class Simulation {
         random_(seed, options.run_index),
         runtime_(system, layout, functions, strings, out, random_, !options.disable_maximal_progress),
         verbose_(!options.silent && options.trace == TraceFormat::Text) {}
+
+  RunResult explore() {
+    if (!options_.silent) {
+      line("BIP Engine (version " SMCBIP_VERSION_TEXT " )");
+      out_ << "[BIP ENGINE]:\n";
+      line("initialize components...");
+    }
+    if (!runtime_.initialize() || !runtime_.resume_atoms(0)) return error();
+    const ExplorationCounts counts = explore_states(runtime_);
+    write_exploration(out_, counts);
+    return {kRunOk, RunEnd::Deadlock, counts.states, {}};
+  }
 
   RunResult run() {
     if (verbose_) {
@@ -192,7 +205,7 @@ RunResult simulate(const bipc::ir::System& system, const SimulateOptions& option
   bind_functions(system, externs, strings, functions);
   const std::uint64_t seed = options.seed ? *options.seed : std::random_device{}();
   Simulation simulation(system, options, layout, functions, strings, out, seed);
-  return simulation.run();
+  return options.explore ? simulation.explore() : simulation.run();
 }
 
 }  // namespace smcbip::engines

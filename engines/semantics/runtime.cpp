@@ -750,6 +750,18 @@ bool Runtime::fire_port(Index atom, Index port) {
   return state_.resume_pending[atom] || update_atom(atom);
 }
 
+bool Runtime::restore(const RunState& state) {
+  state_ = state;
+  try {
+    for (Index a = 0; a < system_.atoms.size(); ++a) {
+      if (!state_.resume_pending[a] && !update_atom(a)) return false;
+    }
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+  return true;
+}
+
 bool Runtime::execute(const Item& item, TimeValue at) {
   state_.now = at;
   try {

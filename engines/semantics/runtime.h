@@ -83,6 +83,8 @@ class Runtime {
   bool initialize();
   /// Computes the enabled items of the current state; false with error() set on failure.
   bool compute_items();
+  /// Replaces the state (e.g. one the explorer kept) and recomputes every atom's offers.
+  bool restore(const RunState& state);
   /// Executes an item at date `at`; false with error() set on failure.
   bool execute(const Item& item, TimeValue at);
   /// The interval in which time may pass from now (urgencies, invariants, resume).
