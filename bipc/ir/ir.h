@@ -338,4 +338,10 @@ struct System {
   std::vector<std::string> cpp_includes, cpp_sources, cpp_include_dirs;
 };
 
+/// The last component of a dotted path or qualified name: "a.b.c" -> "c".
+std::string last_component(const std::string& path);
+
+/// The BIP name of a value kind: "void", "bool", "int", "float", "string", "extern".
+const char* value_kind_name(ValueKind kind);
+
 }  // namespace smcbip::bipc::ir

@@ -51,15 +51,9 @@ std::string record_text(const std::string& text) {
   return out;
 }
 
-std::string short_name(const std::string& qualified) {
-  const auto dot = qualified.rfind('.');
-  return dot == std::string::npos ? qualified : qualified.substr(dot + 1);
-}
-
 std::string base_name(const std::string& path, const std::string& root) {
   if (path.empty()) return root;
-  const auto dot = path.rfind('.');
-  return dot == std::string::npos ? path : path.substr(dot + 1);
+  return last_component(path);
 }
 
 /// Port parameters quoted as triggers in a connector type's define.
@@ -93,7 +87,8 @@ class DotWriter {
     const CompoundInstance& node = s_.compounds[c];
     out_ += indent + "subgraph cluster_c" + std::to_string(c) + " {\n";
     const std::string inner = indent + "  ";
-    const std::string label = base_name(node.path, s_.root_name) + " : " + short_name(node.type);
+    const std::string label =
+        base_name(node.path, s_.root_name) + " : " + last_component(node.type);
     out_ += inner + "label=" + dot_string({label}) + "; style=rounded; color=\"#7090c0\";\n";
     for (Index a : node.atoms) atom(a, inner);
     for (Index k : node.connectors) connector(k, inner);
@@ -115,7 +110,7 @@ class DotWriter {
     }
     // Name and type above, one field per exported port below, where the connectors attach.
     std::string label = record_text(base_name(instance.path, s_.root_name)) + "\\n" +
-                        record_text(short_name(type.name));
+                        record_text(last_component(type.name));
     if (!fields.empty()) label = "{" + label + "|{" + fields + "}}";
     out_ += indent + "a" + std::to_string(a) +
             " [shape=record, style=filled, fillcolor=\"#f4f4e8\", label=\"" + label + "\"];\n";
@@ -125,7 +120,7 @@ class DotWriter {
     if (k >= s_.connectors.size()) return;
     const ConnectorInstance& instance = s_.connectors[k];
     const bool typed = instance.type < s_.connector_types.size();
-    const std::string type = typed ? short_name(s_.connector_types[instance.type].name) : "?";
+    const std::string type = typed ? last_component(s_.connector_types[instance.type].name) : "?";
     const bool exports = typed && s_.connector_types[instance.type].export_name.has_value();
     out_ += indent + "k" + std::to_string(k) + " [shape=ellipse, fontsize=9, margin=0.02, " +
             (exports ? "peripheries=2, " : "") +

@@ -16,24 +16,6 @@ std::string number_text(double f) {
   return ec == std::errc() ? std::string(buffer, end) : std::to_string(f);
 }
 
-const char* kind_suffix(ValueKind kind) {
-  switch (kind) {
-    case ValueKind::Void:
-      return "void";
-    case ValueKind::Bool:
-      return "bool";
-    case ValueKind::Int:
-      return "int";
-    case ValueKind::Float:
-      return "float";
-    case ValueKind::String:
-      return "string";
-    case ValueKind::Extern:
-      return "extern";
-  }
-  return "?";
-}
-
 const char* op_name(Op op) {
   // In the order of ir::Op; the assertion catches an operation added without a name.
   static const char* const names[] = {"push",
@@ -102,7 +84,7 @@ std::string data_type_name(const DataType& type, const System& system) {
   if (type.kind == ValueKind::Extern && type.extern_type < system.extern_types.size()) {
     return system.extern_types[type.extern_type].name;
   }
-  return kind_suffix(type.kind);
+  return value_kind_name(type.kind);
 }
 
 json value_json(const Value& v) {
@@ -207,7 +189,7 @@ std::string instruction_text(const Instr& in, const System& system) {
     case Op::Le:
     case Op::Gt:
     case Op::Ge:
-      return text + "." + kind_suffix(in.kind);
+      return text + "." + value_kind_name(in.kind);
     default:
       return text;
   }

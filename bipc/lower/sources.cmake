@@ -8,6 +8,7 @@ list(APPEND BIPC_SOURCES
   lower/lower_stochastic.cpp
   lower/instantiate.cpp
   lower/instance_checks.cpp
+  ir/ir.cpp
   ir/ir_json.cpp
   ir/ir_text.cpp
   ir/ir_dot.cpp)

@@ -22,24 +22,6 @@ std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
 }
 
-const char* kind_name(ValueKind kind) {
-  switch (kind) {
-    case ValueKind::Void:
-      return "void";
-    case ValueKind::Bool:
-      return "bool";
-    case ValueKind::Int:
-      return "int";
-    case ValueKind::Float:
-      return "float";
-    case ValueKind::String:
-      return "string";
-    case ValueKind::Extern:
-      return "extern";
-  }
-  return "?";
-}
-
 Val* slot(const Instr& in, const Frame& f) {
   switch (in.scope) {
     case Scope::AtomData:
@@ -162,7 +144,11 @@ Interval solve(Op op, double a, double b, double c) {
   const double x = (c - a) / b;
   if (b < 0.0) {
     // Dividing by a negative slope turns the comparison around.
-    op = op == Op::Lt ? Op::Gt : op == Op::Le ? Op::Ge : op == Op::Gt ? Op::Lt : op == Op::Ge ? Op::Le : op;
+    op = op == Op::Lt   ? Op::Gt
+         : op == Op::Le ? Op::Ge
+         : op == Op::Gt ? Op::Lt
+         : op == Op::Ge ? Op::Le
+                        : op;
   }
   const double limit = 9.0e18;
   if (x > limit) return op == Op::Lt || op == Op::Le ? Interval::all() : Interval::none();
@@ -261,142 +247,145 @@ Val CodeEvaluator::call(const Instr& in) {
     const bipc::ir::ExternFunction& decl = system_.functions[in.index];
     std::string signature = decl.name + "(";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
-      signature += (i ? ", " : "") + std::string(kind_name(kinds[i]));
+      signature += (i ? ", " : "") + std::string(bipc::ir::value_kind_name(kinds[i]));
     }
     throw CodeFault{"extern function " + signature + ") has no implementation"};
   }
-  std::vector<Val> args(stack_.end() - static_cast<std::ptrdiff_t>(count), stack_.end());
-  stack_.resize(stack_.size() - count);
+  const std::span<const Val> args(stack_.data() + stack_.size() - count, count);
   // Variadic calls see their own argument kinds; the IR declares them per call site.
   call_.arg_kinds = kinds;
   if (f->variadic && count > kinds.size()) call_.arg_kinds = {};
-  return f->fn(call_, args);
+  const Val result = f->fn(call_, args);
+  stack_.resize(stack_.size() - count);
+  return result;
 }
 
 void CodeEvaluator::run(const bipc::ir::Code& code, const Frame& frame) {
   const std::vector<Instr>& instrs = code.instrs;
-  const std::size_t size = instrs.size();
-  for (std::size_t pc = 0; pc < size; ++pc) {
-    const Instr& in = instrs[pc];
-    switch (in.op) {
-      case Op::PushBool:
-        stack_.push_back(make_bool(in.imm.b));
-        break;
-      case Op::PushInt:
-        stack_.push_back(make_int(in.imm.i));
-        break;
-      case Op::PushFloat:
-        stack_.push_back(make_float(in.imm.f));
-        break;
-      case Op::PushString: {
-        Val v;
-        v.s = functions_.string_ids[in.index];
-        stack_.push_back(v);
-        break;
-      }
-      case Op::Load:
-        if (in.scope == Scope::Clock) {
-          stack_.push_back(make_float(
-              clock_value(frame.clocks[in.index], frame.clock_units[in.index], frame.now)));
-        } else {
-          stack_.push_back(*slot(in, frame));
-        }
-        break;
-      case Op::Store: {
-        const Val v = stack_.back();
-        stack_.pop_back();
-        if (in.scope == Scope::Clock) {
-          ClockState& clock = frame.clocks[in.index];
-          clock.value_at = v.f;
-          clock.since = frame.now;
-        } else {
-          *slot(in, frame) = v;
-        }
-        break;
-      }
-      case Op::StoreRate: {
-        const Val v = stack_.back();
-        stack_.pop_back();
-        ClockState& clock = frame.clocks[in.index];
-        clock.value_at = clock_value(clock, frame.clock_units[in.index], frame.now);
-        clock.since = frame.now;
-        clock.rate = v.f;
-        break;
-      }
-      case Op::Neg:
-        stack_.back() = in.kind == ValueKind::Float ? make_float(-stack_.back().f)
-                                                    : make_int(wrap_sub(0, stack_.back().i));
-        break;
-      case Op::Not:
-        stack_.back() = make_bool(!stack_.back().b);
-        break;
-      case Op::BitNot:
-        stack_.back() = make_int(~stack_.back().i);
-        break;
-      case Op::Add:
-      case Op::Sub:
-      case Op::Mul:
-      case Op::Div:
-      case Op::Mod:
-      case Op::BitAnd:
-      case Op::BitOr:
-      case Op::BitXor: {
-        const Val b = stack_.back();
-        stack_.pop_back();
-        stack_.back() = arithmetic(in.op, in.kind, stack_.back(), b);
-        break;
-      }
-      case Op::Eq:
-      case Op::Ne:
-      case Op::Lt:
-      case Op::Le:
-      case Op::Gt:
-      case Op::Ge: {
-        const Val b = stack_.back();
-        stack_.pop_back();
-        stack_.back() = make_bool(compare(in.op, in.kind, stack_.back(), b, call_.strings));
-        break;
-      }
-      case Op::IntToFloat:
-        stack_.back() = make_float(static_cast<double>(stack_.back().i));
-        break;
-      case Op::Call: {
-        const Val result = call(in);
-        if (system_.functions[in.index].result) stack_.push_back(result);
-        break;
-      }
-      case Op::Jump:
-        pc = in.index - 1;
-        break;
-      case Op::JumpIfFalse: {
-        const bool c = stack_.back().b;
-        stack_.pop_back();
-        if (!c) pc = in.index - 1;
-        break;
-      }
-      case Op::JumpIfFalseKeep:
-        if (!stack_.back().b) {
-          pc = in.index - 1;
-        } else {
-          stack_.pop_back();
-        }
-        break;
-      case Op::JumpIfTrueKeep:
-        if (stack_.back().b) {
-          pc = in.index - 1;
-        } else {
-          stack_.pop_back();
-        }
-        break;
-      case Op::Pop:
-        stack_.pop_back();
-        break;
+  for (std::size_t pc = 0; pc < instrs.size(); ++pc) step(instrs[pc], frame, pc);
+}
+
+void CodeEvaluator::step(const Instr& in, const Frame& frame, std::size_t& pc) {
+  switch (in.op) {
+    case Op::PushBool:
+      stack_.push_back(make_bool(in.imm.b));
+      break;
+    case Op::PushInt:
+      stack_.push_back(make_int(in.imm.i));
+      break;
+    case Op::PushFloat:
+      stack_.push_back(make_float(in.imm.f));
+      break;
+    case Op::PushString: {
+      Val v;
+      v.s = functions_.string_ids[in.index];
+      stack_.push_back(v);
+      break;
     }
+    case Op::Load:
+      if (in.scope == Scope::Clock) {
+        stack_.push_back(make_float(
+            clock_value(frame.clocks[in.index], frame.clock_units[in.index], frame.now)));
+      } else {
+        stack_.push_back(*slot(in, frame));
+      }
+      break;
+    case Op::Store: {
+      const Val v = stack_.back();
+      stack_.pop_back();
+      if (in.scope == Scope::Clock) {
+        ClockState& clock = frame.clocks[in.index];
+        clock.value_at = v.f;
+        clock.since = frame.now;
+      } else {
+        *slot(in, frame) = v;
+      }
+      break;
+    }
+    case Op::StoreRate: {
+      const Val v = stack_.back();
+      stack_.pop_back();
+      ClockState& clock = frame.clocks[in.index];
+      clock.value_at = clock_value(clock, frame.clock_units[in.index], frame.now);
+      clock.since = frame.now;
+      clock.rate = v.f;
+      break;
+    }
+    case Op::Neg:
+      stack_.back() = in.kind == ValueKind::Float ? make_float(-stack_.back().f)
+                                                  : make_int(wrap_sub(0, stack_.back().i));
+      break;
+    case Op::Not:
+      stack_.back() = make_bool(!stack_.back().b);
+      break;
+    case Op::BitNot:
+      stack_.back() = make_int(~stack_.back().i);
+      break;
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+    case Op::BitAnd:
+    case Op::BitOr:
+    case Op::BitXor: {
+      const Val b = stack_.back();
+      stack_.pop_back();
+      stack_.back() = arithmetic(in.op, in.kind, stack_.back(), b);
+      break;
+    }
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge: {
+      const Val b = stack_.back();
+      stack_.pop_back();
+      stack_.back() = make_bool(compare(in.op, in.kind, stack_.back(), b, call_.strings));
+      break;
+    }
+    case Op::IntToFloat:
+      stack_.back() = make_float(static_cast<double>(stack_.back().i));
+      break;
+    case Op::Call: {
+      const Val result = call(in);
+      if (system_.functions[in.index].result) stack_.push_back(result);
+      break;
+    }
+    case Op::Jump:
+      pc = in.index - 1;
+      break;
+    case Op::JumpIfFalse: {
+      const bool c = stack_.back().b;
+      stack_.pop_back();
+      if (!c) pc = in.index - 1;
+      break;
+    }
+    case Op::JumpIfFalseKeep:
+      if (!stack_.back().b) {
+        pc = in.index - 1;
+      } else {
+        stack_.pop_back();
+      }
+      break;
+    case Op::JumpIfTrueKeep:
+      if (stack_.back().b) {
+        pc = in.index - 1;
+      } else {
+        stack_.pop_back();
+      }
+      break;
+    case Op::Pop:
+      stack_.pop_back();
+      break;
   }
 }
 
 Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& frame) {
   if (code.empty()) return Interval::all();
+  // Without clocks a guard holds at all dates or at none: no need for time sets.
+  if (frame.clocks == nullptr) return holds(code, frame) ? Interval::all() : Interval::none();
   using Kind = TimedItem::Kind;
   std::vector<TimedItem> stack;
   // A `&&`/`||` whose left side depends on time cannot short-circuit: remember it and combine
@@ -510,29 +499,26 @@ Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& fram
         in.op == Op::JumpIfTrueKeep) {
       const bool c = in.op == Op::Jump ? false : stack.back().value.b;
       const bool keep = in.op == Op::JumpIfFalseKeep || in.op == Op::JumpIfTrueKeep;
-      const bool jump = in.op == Op::Jump ? true
-                        : in.op == Op::JumpIfTrueKeep ? c
-                                                      : !c;
+      const bool jump = in.op == Op::Jump ? true : in.op == Op::JumpIfTrueKeep ? c : !c;
       if (in.op != Op::Jump && !(keep && jump)) stack.pop_back();
       if (jump) pc = in.index - 1;
       continue;
     }
     stack_.clear();
-    const std::size_t arity = in.op == Op::Call ? in.arg
-                              : (in.op >= Op::Add && in.op <= Op::Ge) ? 2
-                              : (in.op == Op::Neg || in.op == Op::Not || in.op == Op::BitNot ||
-                                 in.op == Op::IntToFloat || in.op == Op::Pop || in.op == Op::Store ||
-                                 in.op == Op::StoreRate)
-                                  ? 1
-                                  : 0;
+    const std::size_t arity =
+        in.op == Op::Call                       ? in.arg
+        : (in.op >= Op::Add && in.op <= Op::Ge) ? 2
+        : (in.op == Op::Neg || in.op == Op::Not || in.op == Op::BitNot || in.op == Op::IntToFloat ||
+           in.op == Op::Pop || in.op == Op::Store || in.op == Op::StoreRate)
+            ? 1
+            : 0;
     for (std::size_t i = stack.size() - arity; i < stack.size(); ++i) {
       const TimedItem& item = stack[i];
       stack_.push_back(item.kind == Kind::Set ? make_bool(!item.set.empty()) : item.value);
     }
     stack.resize(stack.size() - arity);
-    bipc::ir::Code one;
-    one.instrs.push_back(in);
-    run(one, frame);
+    std::size_t no_jump = pc;
+    step(in, frame, no_jump);
     for (const Val v : stack_) stack.push_back({Kind::Plain, v, 0, 0, {}});
   }
   if (stack.empty()) return Interval::all();

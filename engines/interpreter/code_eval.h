@@ -26,7 +26,7 @@ struct ClockState {
 struct Frame {
   Val* atom_data = nullptr;
   const Val* atom_params = nullptr;
-  ClockState* clocks = nullptr;
+  ClockState* clocks = nullptr;            // null when the atom has no clocks
   const TimeValue* clock_units = nullptr;  // nanoseconds per unit of each clock
   Val* connector_data = nullptr;
   Val* (*port_slot)(const void* context, bipc::ir::Index port, std::uint16_t arg) = nullptr;
@@ -57,8 +57,7 @@ std::string bind_functions(const bipc::ir::System& system, const Externs& extern
 /// Executes code over one frame. Not thread-safe: one evaluator per thread.
 class CodeEvaluator {
  public:
-  CodeEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
-                CallContext& call);
+  CodeEvaluator(const bipc::ir::System& system, const BoundFunctions& functions, CallContext& call);
 
   /// Runs an expression (an empty one is `true`) and returns its value.
   Val evaluate(const bipc::ir::Code& code, const Frame& frame);
@@ -73,12 +72,14 @@ class CodeEvaluator {
 
   /// The value of a clock at a date, in the clock's unit.
   static double clock_value(const ClockState& clock, TimeValue unit, TimeValue at) {
-    return clock.value_at + clock.rate * static_cast<double>(at - clock.since) /
-                                static_cast<double>(unit);
+    return clock.value_at +
+           clock.rate * static_cast<double>(at - clock.since) / static_cast<double>(unit);
   }
 
  private:
   void run(const bipc::ir::Code& code, const Frame& frame);
+  /// One instruction; a jump sets `pc` to the instruction before its target.
+  void step(const bipc::ir::Instr& in, const Frame& frame, std::size_t& pc);
   Val call(const bipc::ir::Instr& in);
 
   const bipc::ir::System& system_;

@@ -9,6 +9,7 @@ namespace smcbip::engines {
 namespace {
 
 using bipc::ir::DefineNode;
+using bipc::ir::last_component;
 using bipc::ir::System;
 
 Val to_val(const bipc::ir::Value& v, StringPool* strings) {
@@ -105,13 +106,9 @@ struct Enumerator {
 
 void add_listing(const System& system, Index compound, Layout& layout) {
   const bipc::ir::CompoundInstance& c = system.compounds[compound];
-  auto last = [](const std::string& path) {
-    const auto dot = path.rfind('.');
-    return dot == std::string::npos ? path : path.substr(dot + 1);
-  };
   std::vector<Index> subs = c.compounds;
   std::sort(subs.begin(), subs.end(), [&](Index a, Index b) {
-    return last(system.compounds[a].path) < last(system.compounds[b].path);
+    return last_component(system.compounds[a].path) < last_component(system.compounds[b].path);
   });
   for (Index sub : subs) add_listing(system, sub, layout);
   std::vector<Index> connectors;
@@ -119,7 +116,7 @@ void add_listing(const System& system, Index compound, Layout& layout) {
     if (!system.connector_types[system.connectors[k].type].export_name) connectors.push_back(k);
   }
   std::sort(connectors.begin(), connectors.end(), [&](Index a, Index b) {
-    return last(system.connectors[a].path) < last(system.connectors[b].path);
+    return last_component(system.connectors[a].path) < last_component(system.connectors[b].path);
   });
   layout.listed_connectors.insert(layout.listed_connectors.end(), connectors.begin(),
                                   connectors.end());
@@ -129,13 +126,10 @@ void add_listing(const System& system, Index compound, Layout& layout) {
 void add_atom_ports(const System& system, Index compound, bool external,
                     std::vector<std::pair<Index, Index>>& out) {
   const bipc::ir::CompoundInstance& c = system.compounds[compound];
-  auto last = [](const std::string& path) {
-    const auto dot = path.rfind('.');
-    return dot == std::string::npos ? path : path.substr(dot + 1);
-  };
   std::vector<std::pair<std::string, std::pair<bool, Index>>> children;
-  for (Index a : c.atoms) children.push_back({last(system.atoms[a].path), {true, a}});
-  for (Index s : c.compounds) children.push_back({last(system.compounds[s].path), {false, s}});
+  for (Index a : c.atoms) children.push_back({last_component(system.atoms[a].path), {true, a}});
+  for (Index s : c.compounds)
+    children.push_back({last_component(system.compounds[s].path), {false, s}});
   std::sort(children.begin(), children.end());
   for (const auto& [name, child] : children) {
     if (!child.first) {
@@ -199,11 +193,7 @@ std::string build_layout(const System& system, Layout& layout) {
     layout.atom_params.push_back(layout.params.size());
     for (const bipc::ir::Value& v : atom.params) layout.params.push_back(to_val(v, nullptr));
     layout.atom_names.push_back(system.root_name + "." + atom.path);
-    for (const bipc::ir::Port& port : type.ports) {
-      if (port.stochastic) layout.stochastic = true;
-    }
   }
-  layout.timed = layout.clock_count > 0;
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];
     const bipc::ir::ConnectorType& type = system.connector_types[connector.type];

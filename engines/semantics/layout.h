@@ -26,29 +26,27 @@ struct DefinedInteraction {
 /// A compound priority rule with its sides as port sets of their connectors.
 struct PriorityRule {
   Index compound = 0;
-  Index rule = 0;         // index into CompoundInstance::priorities
-  Index low_connector = bipc::ir::kNone;   // kNone: `*`
+  Index rule = 0;                         // index into CompoundInstance::priorities
+  Index low_connector = bipc::ir::kNone;  // kNone: `*`
   PortSet low = 0;
   Index high_connector = bipc::ir::kNone;  // kNone: `*`
-  PortSet high = 0;       // 0 with a connector: `D:*` (every interaction of D)
+  PortSet high = 0;                        // 0 with a connector: `D:*` (every interaction of D)
 };
 
 struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets
-  std::vector<std::size_t> connector_data;                                       // offsets
+  std::vector<std::size_t> connector_data;                                    // offsets
   std::size_t data_size = 0, place_count = 0, clock_count = 0;
-  std::vector<Val> params;           // atom parameters, flattened
-  std::vector<TimeValue> clock_units;  // per flattened clock
+  std::vector<Val> params;                               // atom parameters, flattened
+  std::vector<TimeValue> clock_units;                    // per flattened clock
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
-  std::vector<bool> top_level;        // per connector: not bound by a connector of its compound
+  std::vector<bool> top_level;           // per connector: not bound by a connector of its compound
   std::vector<Index> listed_connectors;  // connectors without export, in listing order
-  std::vector<std::pair<Index, Index>> internal_ports;  // (atom, port) in listing order
-  std::vector<std::pair<Index, Index>> extern_ports;    // (atom, port) in listing order
-  std::vector<std::vector<PriorityRule>> rules;  // per compound, in declaration order
-  std::vector<std::vector<Index>> rules_by_low;  // per connector: rules of its compound
-  std::vector<std::string> atom_names, connector_names, short_names;  // full names "ROOT.x"
-  bool timed = false;  // any clock in the system
-  bool stochastic = false;
+  std::vector<std::pair<Index, Index>> internal_ports;   // (atom, port) in listing order
+  std::vector<std::pair<Index, Index>> extern_ports;     // (atom, port) in listing order
+  std::vector<std::vector<PriorityRule>> rules;          // per compound, in declaration order
+  std::vector<std::vector<Index>> rules_by_low;          // per connector: rules of its compound
+  std::vector<std::string> atom_names, connector_names;  // full names "ROOT.x"
 };
 
 /// Builds the layout; an error message names what the engines cannot run (e.g. a connector

@@ -2,12 +2,12 @@
 // priorities, timing constraints, and execution. Follows the Verimag reference engine.
 #include "engines/semantics/runtime.h"
 
-#include "engines/engines.h"
-
 #include <algorithm>
 #include <bit>
 #include <functional>
 #include <sstream>
+
+#include "engines/engines.h"
 
 namespace smcbip::engines {
 
@@ -91,7 +91,6 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     : system_(system),
       layout_(layout),
       strings_(strings),
-      out_(out),
       call_{out, strings, &random, {}},
       eval_(system, functions, call_),
       maximal_progress_(maximal_progress) {
@@ -111,7 +110,8 @@ Frame Runtime::atom_frame(Index atom) {
   Frame f;
   f.atom_data = state_.data.data() + layout_.atom_data[atom];
   f.atom_params = layout_.params.data() + layout_.atom_params[atom];
-  f.clocks = state_.clocks.data() + layout_.atom_clocks[atom];
+  const bool has_clocks = !system_.atom_types[system_.atoms[atom].type].clocks.empty();
+  f.clocks = has_clocks ? state_.clocks.data() + layout_.atom_clocks[atom] : nullptr;
   f.clock_units = layout_.clock_units.data() + layout_.atom_clocks[atom];
   f.instance_slot = &RuntimeDetail::instance_slot;
   f.instance_context = this;
@@ -149,9 +149,8 @@ bool Runtime::initialize() {
     // Components initialise in name order, level by level, as the reference engine's maps do.
     std::vector<Index> order(system_.atoms.size());
     for (Index a = 0; a < order.size(); ++a) order[a] = a;
-    std::sort(order.begin(), order.end(), [&](Index x, Index y) {
-      return layout_.atom_names[x] < layout_.atom_names[y];
-    });
+    std::sort(order.begin(), order.end(),
+              [&](Index x, Index y) { return layout_.atom_names[x] < layout_.atom_names[y]; });
     for (Index a : order) {
       const AtomType& type = system_.atom_types[system_.atoms[a].type];
       for (Index p : type.initial_places) state_.marking[layout_.atom_places[a] + p] = 1;
@@ -196,9 +195,8 @@ bool Runtime::check_invariants(Index atom) {
       holds = eval_.holds(inv.guard, f);
     }
     if (!holds) {
-      const std::string& path = system_.atoms[atom].path;
-      const std::string short_name = path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1);
-      return fail(5, "the invariant " + inv.name + " of component " + short_name +
+      return fail(5, "the invariant " + inv.name + " of component " +
+                         bipc::ir::last_component(system_.atoms[atom].path) +
                          " has been violated!");
     }
   }
@@ -299,16 +297,16 @@ bool Runtime::update_atom(Index atom) {
   for (std::size_t p = 0; p < n; ++p) {
     if (!values[p] || type.ports[p].is_extern) continue;
     std::vector<bool> seen(rules, false);
-    std::vector<std::size_t> todo;
+    std::vector<std::size_t> chain_ends;
     for (std::size_t r = 0; r < rules; ++r) {
       if (active[r] && in_low(r, p)) {
         seen[r] = true;
-        todo.push_back(r);
+        chain_ends.push_back(r);
       }
     }
-    while (!todo.empty() && !disabled[p]) {
-      const std::size_t r = todo.back();
-      todo.pop_back();
+    while (!chain_ends.empty() && !disabled[p]) {
+      const std::size_t r = chain_ends.back();
+      chain_ends.pop_back();
       if (high_enabled(r)) {
         disabled[p] = true;
         break;
@@ -319,7 +317,7 @@ bool Runtime::update_atom(Index atom) {
         for (std::size_t q = 0; q < n && !chained; ++q) chained = in_high(r, q) && in_low(r2, q);
         if (chained) {
           seen[r2] = true;
-          todo.push_back(r2);
+          chain_ends.push_back(r2);
         }
       }
     }
@@ -379,8 +377,7 @@ namespace {
 bool subset(PortSet a, PortSet b) { return (a & ~b) == 0; }
 
 std::string interaction_name(const bipc::ir::System& system, Index connector, PortSet ports) {
-  const std::string& path = system.connectors[connector].path;
-  std::string text = path.substr(path.rfind('.') == std::string::npos ? 0 : path.rfind('.') + 1) + ":";
+  std::string text = bipc::ir::last_component(system.connectors[connector].path) + ":";
   const auto& type = system.connector_types[system.connectors[connector].type];
   for (std::size_t i = 0; i < type.ports.size(); ++i) {
     if (ports & (PortSet{1} << i)) text += " " + type.ports[i].first;
@@ -390,83 +387,86 @@ std::string interaction_name(const bipc::ir::System& system, Index connector, Po
 
 }  // namespace
 
+bool Runtime::applies_low(const PriorityRule& rule, const RuleNode& x) const {
+  if (rule.low_connector == kNone) {
+    return layout_.top_level[x.first] && x.first != rule.high_connector;
+  }
+  return x.first == rule.low_connector &&
+         (x.second == rule.low || (maximal_progress_ && subset(x.second, rule.low)));
+}
+
+void Runtime::add_defined(Index connector, std::vector<RuleNode>& out) const {
+  for (const DefinedInteraction& d : layout_.defined[connector])
+    out.push_back({connector, d.ports});
+}
+
+std::vector<Runtime::RuleNode> Runtime::high_side(const PriorityRule& rule) const {
+  std::vector<RuleNode> out;
+  if (rule.high_connector == kNone) {
+    for (Index k : system_.compounds[rule.compound].connectors) {
+      if (layout_.top_level[k] && k != rule.low_connector) add_defined(k, out);
+    }
+  } else if (rule.high == 0) {
+    add_defined(rule.high_connector, out);
+  } else {
+    out.push_back({rule.high_connector, rule.high});
+  }
+  return out;
+}
+
+std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const {
+  std::vector<RuleNode> out;
+  if (rule.low_connector != kNone) {
+    out.push_back({rule.low_connector, rule.low});
+    return out;
+  }
+  for (Index k : system_.compounds[rule.compound].connectors) {
+    if (layout_.top_level[k] && k != rule.high_connector) add_defined(k, out);
+  }
+  return out;
+}
+
 bool Runtime::check_compound_priority_cycles() {
-  for (Index c = 0; c < layout_.rules.size(); ++c) {
-    const std::vector<PriorityRule>& rules = layout_.rules[c];
+  for (const std::vector<PriorityRule>& rules : layout_.rules) {
     if (rules.empty()) continue;
     std::vector<bool> active(rules.size());
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
-    using Node = std::pair<Index, PortSet>;
-    auto applies_low = [&](const PriorityRule& rule, const Node& x) {
-      if (rule.low_connector == kNone) {
-        return layout_.top_level[x.first] && x.first != rule.high_connector;
-      }
-      return x.first == rule.low_connector &&
-             (x.second == rule.low || (maximal_progress_ && subset(x.second, rule.low)));
-    };
-    auto highs = [&](const PriorityRule& rule) {
-      std::vector<Node> out;
-      auto all_of = [&](Index k) {
-        for (const DefinedInteraction& d : layout_.defined[k]) out.push_back({k, d.ports});
-      };
-      if (rule.high_connector == kNone) {
-        for (Index k : system_.compounds[c].connectors) {
-          if (layout_.top_level[k] && k != rule.low_connector) all_of(k);
-        }
-      } else if (rule.high == 0) {
-        all_of(rule.high_connector);
-      } else {
-        out.push_back({rule.high_connector, rule.high});
-      }
-      return out;
-    };
-    auto lows = [&](const PriorityRule& rule) {
-      std::vector<Node> out;
-      if (rule.low_connector != kNone) {
-        out.push_back({rule.low_connector, rule.low});
-        return out;
-      }
-      for (Index k : system_.compounds[c].connectors) {
-        if (!layout_.top_level[k] || k == rule.high_connector) continue;
-        for (const DefinedInteraction& d : layout_.defined[k]) out.push_back({k, d.ports});
-      }
-      return out;
-    };
-    std::vector<Node> cycle;
-    std::function<bool(std::vector<Node>&, int)> search = [&](std::vector<Node>& path, int depth) {
-      if (depth > 64) return false;
-      const Node x = path.back();
-      for (std::size_t r = 0; r < rules.size(); ++r) {
-        if (!active[r] || !applies_low(rules[r], x)) continue;
-        for (const Node& d : highs(rules[r])) {
-          std::vector<Node> next = path;
-          if (rules[r].low_connector != kNone && x != Node{rules[r].low_connector, rules[r].low}) {
-            next.push_back({rules[r].low_connector, rules[r].low});
-          }
-          next.push_back(d);
-          for (std::size_t i = 0; i + 1 < next.size(); ++i) {
-            if (next[i].first == d.first && subset(d.second, next[i].second)) {
-              cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
-              if (d != next[i]) cycle.push_back(next[i]);
-              return true;
+    // Depth-first over the static rule chains from each low side (E/Interaction.cpp of the
+    // reference engine): a high side included in an interaction already on the path closes
+    // a cycle.
+    std::vector<RuleNode> cycle;
+    std::function<bool(const std::vector<RuleNode>&, int)> search =
+        [&](const std::vector<RuleNode>& path, int depth) {
+          if (depth > 64) return false;
+          const RuleNode x = path.back();
+          for (std::size_t r = 0; r < rules.size(); ++r) {
+            if (!active[r] || !applies_low(rules[r], x)) continue;
+            const RuleNode own_low{rules[r].low_connector, rules[r].low};
+            for (const RuleNode& d : high_side(rules[r])) {
+              std::vector<RuleNode> next = path;
+              if (rules[r].low_connector != kNone && x != own_low) next.push_back(own_low);
+              next.push_back(d);
+              for (std::size_t i = 0; i + 1 < next.size(); ++i) {
+                if (next[i].first == d.first && subset(d.second, next[i].second)) {
+                  cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
+                  if (d != next[i]) cycle.push_back(next[i]);
+                  return true;
+                }
+              }
+              if (search(next, depth + 1)) return true;
             }
           }
-          if (search(next, depth + 1)) return true;
-        }
-      }
-      return false;
-    };
+          return false;
+        };
     for (std::size_t r = 0; r < rules.size(); ++r) {
       if (!active[r]) continue;
-      for (const Node& low : lows(rules[r])) {
-        std::vector<Node> path{low};
-        if (search(path, 0)) {
-          std::string text;
-          for (std::size_t i = 0; i < cycle.size(); ++i) {
-            text += (i ? " < " : "") + interaction_name(system_, cycle[i].first, cycle[i].second);
-          }
-          return fail(3, "cycle in priorities! (" + text + ")");
+      for (const RuleNode& low : low_side(rules[r])) {
+        if (!search({low}, 0)) continue;
+        std::string text;
+        for (std::size_t i = 0; i < cycle.size(); ++i) {
+          text += (i ? " < " : "") + interaction_name(system_, cycle[i].first, cycle[i].second);
         }
+        return fail(3, "cycle in priorities! (" + text + ")");
       }
     }
   }
@@ -511,8 +511,7 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
     const PortSet below = high.ports & ((PortSet{1} << i) - 1);
     const PortValue& hv = high.choice[static_cast<std::size_t>(std::popcount(below))];
     if (lv.from_atom != hv.from_atom) return false;
-    if (!lv.from_atom && lv.sub != hv.sub &&
-        !dominated_locally(values_[lv.sub], values_[hv.sub])) {
+    if (!lv.from_atom && lv.sub != hv.sub && !dominated_locally(values_[lv.sub], values_[hv.sub])) {
       return false;
     }
   }
@@ -556,7 +555,8 @@ void Runtime::compute_connector(Index k) {
     }
     if (!possible) continue;
     const bipc::ir::InteractionCode* code =
-        defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)] : nullptr;
+        defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)]
+                             : nullptr;
     std::vector<std::size_t> pick(members.size(), 0);
     for (;;) {
       InteractionValue value;
@@ -570,9 +570,10 @@ void Runtime::compute_connector(Index k) {
         value.raw = intersect(value.raw, pv.constraint);
       }
       if (!value.raw.interval.empty()) {
-        value.data.assign(state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
-                          state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k] +
-                                                                            type.data.size()));
+        value.data.assign(
+            state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
+            state_.data.begin() +
+                static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
         PortContext context{this, &value};
         Frame f;
         f.connector_data = value.data.data();
@@ -613,49 +614,30 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
       }
     }
   }
-  const Index compound = system_.connectors[k].parent;
-  const std::vector<PriorityRule>& rules = layout_.rules[compound];
+  const std::vector<PriorityRule>& rules = layout_.rules[system_.connectors[k].parent];
   if (rules.empty()) return;
-  using Node = std::pair<Index, PortSet>;
-  auto applies_low = [&](const PriorityRule& rule, Index connector, PortSet ports) {
-    if (rule.low_connector == kNone) {
-      return layout_.top_level[connector] && connector != rule.high_connector;
-    }
-    return connector == rule.low_connector &&
-           (ports == rule.low || (maximal_progress_ && subset(ports, rule.low)));
-  };
-  std::vector<Node> visited;
-  std::function<void(Index, PortSet)> dominate = [&](Index connector, PortSet ports) {
-    if (std::find(visited.begin(), visited.end(), Node{connector, ports}) != visited.end()) return;
-    visited.push_back({connector, ports});
+  // Rule closure: the dominators of every high side reached from this value through active
+  // rules, whether or not the interactions in between are enabled.
+  std::vector<RuleNode> visited;
+  std::function<void(const RuleNode&)> dominate = [&](const RuleNode& low) {
+    if (std::find(visited.begin(), visited.end(), low) != visited.end()) return;
+    visited.push_back(low);
     for (const PriorityRule& rule : rules) {
-      if (!applies_low(rule, connector, ports) || !rule_guard(rule)) continue;
-      std::vector<Node> highs;
-      auto all_of = [&](Index d) {
-        for (const DefinedInteraction& def : layout_.defined[d]) highs.push_back({d, def.ports});
-      };
-      if (rule.high_connector == kNone) {
-        for (Index d : system_.compounds[compound].connectors) {
-          if (layout_.top_level[d] && d != rule.low_connector) all_of(d);
-        }
-      } else if (rule.high == 0) {
-        all_of(rule.high_connector);
-      } else {
-        highs.push_back({rule.high_connector, rule.high});
-      }
-      for (const Node& h : highs) {
-        compute_connector(h.first);
-        for (Index w : connector_values_[h.first]) {
+      if (!applies_low(rule, low) || !rule_guard(rule)) continue;
+      for (const RuleNode& high : high_side(rule)) {
+        compute_connector(high.first);
+        for (Index w : connector_values_[high.first]) {
           const InteractionValue& other = values_[w];
-          if (other.ports == h.second || (maximal_progress_ && subset(h.second, other.ports))) {
+          if (other.ports == high.second ||
+              (maximal_progress_ && subset(high.second, other.ports))) {
             restrict_by(value.after, other.raw);
           }
         }
-        dominate(h.first, h.second);
+        dominate(high);
       }
     }
   };
-  dominate(k, value.ports);
+  dominate({k, value.ports});
 }
 
 bool Runtime::compute_items() {
@@ -733,8 +715,9 @@ bool Runtime::execute_value(Index index) {
     f.now = state_.now;
     eval_.execute(type.interactions[static_cast<std::size_t>(code)].down, f);
   }
-  std::copy(value.data.begin(), value.data.end(),
-            state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[value.connector]));
+  std::copy(
+      value.data.begin(), value.data.end(),
+      state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[value.connector]));
   // Ports run in the interaction's port order, depth first: a sub-connector's down comes after
   // the atoms of earlier ports have executed (reference engine order).
   for (const PortValue& pv : value.choice) {
@@ -801,7 +784,6 @@ std::string Runtime::format_ports(const InteractionValue& value) const {
     if (!text.empty()) text += ' ';
     text += connector.bound_names[i] + "(";
     const bipc::ir::PortType* port_type = nullptr;
-    const Val* data = nullptr;
     std::vector<Val> values;
     if (pv.from_atom) {
       const AtomType& type = system_.atom_types[system_.atoms[pv.atom].type];
@@ -814,7 +796,6 @@ std::string Runtime::format_ports(const InteractionValue& value) const {
       if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
       for (Index slot : type.export_data) values.push_back(sub.data[slot]);
     }
-    (void)data;
     if (port_type) {
       for (std::size_t p = 0; p < port_type->params.size() && p < values.size(); ++p) {
         text += port_type->params[p].first + "=" +

@@ -44,8 +44,8 @@ struct AtomPortValue {
 /// interaction of a sub-connector (with that connector's data after its `up`).
 struct PortValue {
   bool from_atom = true;
-  Index atom = 0, port = 0;        // atom offers
-  Index sub = bipc::ir::kNone;     // sub-connector offers: index into Runtime::values_
+  Index atom = 0, port = 0;     // atom offers
+  Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values_
   Constraint constraint;
 };
 
@@ -63,8 +63,8 @@ struct InteractionValue {
 /// An item the engine may execute at a state: an interaction, an internal port, an extern port.
 struct Item {
   enum class Kind : std::uint8_t { Interaction, Internal, External } kind = Kind::Interaction;
-  Index value = 0;               // Interaction: index into values()
-  Index atom = 0, port = 0;      // Internal / External
+  Index value = 0;           // Interaction: index into values()
+  Index atom = 0, port = 0;  // Internal / External
   Constraint constraint;
 };
 
@@ -122,6 +122,12 @@ class Runtime {
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
   void apply_priorities(InteractionValue& value, Index connector_index);
   bool rule_guard(const PriorityRule& rule);
+  /// An interaction named by a priority rule: its connector and port set.
+  using RuleNode = std::pair<Index, PortSet>;
+  bool applies_low(const PriorityRule& rule, const RuleNode& interaction) const;
+  std::vector<RuleNode> high_side(const PriorityRule& rule) const;
+  std::vector<RuleNode> low_side(const PriorityRule& rule) const;
+  void add_defined(Index connector, std::vector<RuleNode>& out) const;
   void restrict_by(Constraint& c, const Constraint& dominator) const;
   bool execute_value(Index value);
   bool fire_port(Index atom, Index port);
@@ -130,7 +136,6 @@ class Runtime {
   const bipc::ir::System& system_;
   const Layout& layout_;
   StringPool& strings_;
-  std::ostream& out_;
   CallContext call_;
   CodeEvaluator eval_;
   bool maximal_progress_;

@@ -52,11 +52,11 @@ Marking mask(const std::vector<bipc::ir::Index>& places) {
 std::string net_problem(const bipc::ir::AtomType& type) {
   if (type.places.size() > 64) return type.name + ": more than 64 places";
   std::map<Marking, std::vector<Marking>> internal_steps;  // reachable marking -> internal targets
-  std::vector<Marking> todo{mask(type.initial_places)};
-  internal_steps[todo.back()];
-  while (!todo.empty()) {
-    const Marking m = todo.back();
-    todo.pop_back();
+  std::vector<Marking> unvisited{mask(type.initial_places)};
+  internal_steps[unvisited.back()];
+  while (!unvisited.empty()) {
+    const Marking m = unvisited.back();
+    unvisited.pop_back();
     std::map<bipc::ir::Index, std::vector<const bipc::ir::Transition*>> enabled;  // by port
     for (const bipc::ir::Transition& t : type.transitions) {
       const Marking from = mask(t.from), to = mask(t.to);
@@ -66,7 +66,7 @@ std::string net_problem(const bipc::ir::AtomType& type) {
       if ((rest & to) != 0) return type.name + ": a transition puts a second token in a place";
       const Marking next = rest | to;
       if (t.port == bipc::ir::kNone) internal_steps[m].push_back(next);
-      if (internal_steps.emplace(next, std::vector<Marking>{}).second) todo.push_back(next);
+      if (internal_steps.emplace(next, std::vector<Marking>{}).second) unvisited.push_back(next);
     }
     for (const auto& [port, ts] : enabled) {
       if (ts.size() > 2 || (ts.size() == 2 && (ts[0]->guard.empty() || ts[1]->guard.empty()))) {

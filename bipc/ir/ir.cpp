@@ -1,0 +1,29 @@
+// Small helpers over the IR's names and kinds, shared by its writers and the engines.
+#include "bipc/ir/ir.h"
+
+namespace smcbip::bipc::ir {
+
+std::string last_component(const std::string& path) {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? path : path.substr(dot + 1);
+}
+
+const char* value_kind_name(ValueKind kind) {
+  switch (kind) {
+    case ValueKind::Void:
+      return "void";
+    case ValueKind::Bool:
+      return "bool";
+    case ValueKind::Int:
+      return "int";
+    case ValueKind::Float:
+      return "float";
+    case ValueKind::String:
+      return "string";
+    case ValueKind::Extern:
+      return "extern";
+  }
+  return "?";
+}
+
+}  // namespace smcbip::bipc::ir
