@@ -30,6 +30,16 @@ TimeValue earliest(const Interval& interval, TimeValue now) {
   return std::max(interval.first(), now);
 }
 
+RuntimeOptions runtime_options(const SimulateOptions& options) {
+  RuntimeOptions r;
+  r.maximal_progress = !options.disable_maximal_progress;
+  r.incremental = options.engine != EngineKind::Reference;
+  if (options.engine == EngineKind::Multithread) {
+    r.threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  }
+  return r;
+}
+
 class Simulation {
  public:
   Simulation(const bipc::ir::System& system, const SimulateOptions& options, const Layout& layout,
@@ -39,7 +49,7 @@ class Simulation {
         out_(out),
         seed_(seed),
         random_(seed, options.run_index),
-        runtime_(system, layout, functions, strings, out, random_, !options.disable_maximal_progress),
+        runtime_(system, layout, functions, strings, out, random_, runtime_options(options)),
         verbose_(!options.silent && options.trace == TraceFormat::Text) {}
 
   RunResult explore() {

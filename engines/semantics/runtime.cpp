@@ -87,13 +87,14 @@ struct RuntimeDetail {
 
 Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
                  const BoundFunctions& functions, StringPool& strings, std::ostream& out,
-                 RandomStream& random, bool maximal_progress)
+                 RandomStream& random, const RuntimeOptions& options)
     : system_(system),
       layout_(layout),
       strings_(strings),
       call_{out, strings, &random, {}},
       eval_(system, functions, call_),
-      maximal_progress_(maximal_progress) {
+      options_(options),
+      maximal_progress_(options.maximal_progress) {
   for (Index a = 0; a < system.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
@@ -731,6 +732,25 @@ bool Runtime::fire_port(Index atom, Index port) {
   if (!v) return true;
   if (!fire_transition(atom, v->transition, port) || !run_internal_transitions(atom)) return false;
   return state_.resume_pending[atom] || update_atom(atom);
+}
+
+std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const {
+  std::vector<std::pair<Index, Index>> ports;
+  if (item.kind != Item::Kind::Interaction) {
+    ports.emplace_back(item.atom, item.port);
+    return ports;
+  }
+  std::function<void(Index)> walk = [&](Index value) {
+    for (const PortValue& pv : values_[value].choice) {
+      if (pv.from_atom) {
+        ports.emplace_back(pv.atom, pv.port);
+      } else {
+        walk(pv.sub);
+      }
+    }
+  };
+  walk(item.value);
+  return ports;
 }
 
 bool Runtime::restore(const RunState& state) {

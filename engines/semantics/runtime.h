@@ -68,6 +68,16 @@ struct Item {
   Constraint constraint;
 };
 
+/// How the semantics is computed: the schedulers share it and differ only here.
+struct RuntimeOptions {
+  bool maximal_progress = true;
+  /// Optimised scheduler: keep each connector's interactions between steps and recompute only
+  /// those of connectors whose atoms (or sub-connectors) an execution touched.
+  bool incremental = false;
+  /// Multithread scheduler: the atoms of one interaction execute on this many threads.
+  unsigned threads = 1;
+};
+
 /// A run-time error of the model, with the reference engine's code and message.
 struct ModelError {
   int code = 0;
@@ -77,7 +87,8 @@ struct ModelError {
 class Runtime {
  public:
   Runtime(const bipc::ir::System& system, const Layout& layout, const BoundFunctions& functions,
-          StringPool& strings, std::ostream& out, RandomStream& random, bool maximal_progress);
+          StringPool& strings, std::ostream& out, RandomStream& random,
+          const RuntimeOptions& options);
 
   /// Initial actions, internal transitions and checks; false with error() set on failure.
   bool initialize();
@@ -104,6 +115,8 @@ class Runtime {
   const Layout& layout() const { return layout_; }
   const bipc::ir::System& system() const { return system_; }
 
+  /// The atom ports (atom, port) an item fires, in execution order.
+  std::vector<std::pair<Index, Index>> atom_ports(const Item& item) const;
   /// `holder.port(d=1;)` entries of an interaction, as the trace prints them.
   std::string format_ports(const InteractionValue& value) const;
   /// The violated deadlines at `now` (real time), as trace lines without the prefix.
@@ -138,6 +151,7 @@ class Runtime {
   StringPool& strings_;
   CallContext call_;
   CodeEvaluator eval_;
+  RuntimeOptions options_;
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
