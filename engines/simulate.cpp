@@ -202,10 +202,6 @@ class Simulation {
 
 RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
                    const Externs& externs, std::ostream& out, std::istream* /*input*/) {
-  if (options.engine != EngineKind::Reference) {
-    return {kUsageError, RunEnd::Error, 0,
-            "only the reference engine is available in this version"};
-  }
   Layout layout;
   if (std::string problem = build_layout(system, layout); !problem.empty()) {
     return {kInputError, RunEnd::Error, 0, problem};
