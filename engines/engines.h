@@ -3,12 +3,15 @@
 #pragma once
 
 #include <cstdint>
+#include <istream>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
 
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
+#include "engines/run_observer.h"
 
 namespace smcbip::engines {
 
@@ -31,9 +34,6 @@ enum RunCode : int {
   kInternalError = 70,         // EX_SOFTWARE
 };
 
-/// How a run ended when it ended normally.
-enum class RunEnd : std::uint8_t { Deadlock, Timelock, Limit, Stopped, Error };
-
 /// Options of one simulation, as `smcbip simulate` takes them.
 struct SimulateOptions {
   EngineKind engine = EngineKind::Reference;
@@ -50,6 +50,11 @@ struct SimulateOptions {
   bool silent = false;
   bool explore = false;
   TraceFormat trace = TraceFormat::Text;
+  /// The race of planned dates (BIP.md): none decides from the model (on when it has a
+  /// @stochastic port), true forces it on timed models without one.
+  std::optional<bool> stochastic;
+  /// Stochastic mode: mean delay of an item whose window has no right end (exponential).
+  TimeValue unbounded_mean = 1'000'000;  // 1 ms
 };
 
 /// The result of a run: its code (RunCode), how it ended, and the number of steps executed.
@@ -60,9 +65,42 @@ struct RunResult {
   std::string message;  // the error, when code is not kRunOk
 };
 
-/// Runs `system` once and writes its trace (and the model's own output) to `out`. Errors of the
-/// model at run time are written as reference-engine error lines and returned as codes.
-/// `input` is read by --interactive.
+/// Where a run writes and reads: the trace, the model's own output (printf), the prompt's input.
+struct RunStreams {
+  std::ostream& trace;
+  std::ostream& model;
+  std::istream* input = nullptr;  // --interactive
+};
+
+/// Runs one system many times (run indices select the random streams), keeping what does not
+/// change between runs. One simulator per thread.
+class Simulator {
+ public:
+  Simulator(const bipc::ir::System& system, const SimulateOptions& options,
+            const Externs& externs);
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  /// Empty when the system can run; otherwise why not (run() then returns kInputError).
+  const std::string& problem() const;
+  /// Whether runs race planned dates (stochastic mode).
+  bool stochastic() const;
+  /// One run with the stream (seed, run_index); `observer` (optional) sees every step.
+  RunResult run(std::uint64_t run_index, const RunStreams& streams,
+                RunObserver* observer = nullptr);
+  /// The seed in use (drawn from the platform when the options have none).
+  std::uint64_t seed() const;
+
+  struct Shared;  // what the runs share (layout, bound externs); defined in simulate.cpp
+
+ private:
+  std::unique_ptr<Shared> shared_;
+};
+
+/// Runs `system` once (run index options.run_index) and writes its trace and the model's own
+/// output to `out`. Errors of the model at run time are written as reference-engine error lines
+/// and returned as codes. `input` is read by --interactive.
 RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
                    const Externs& externs, std::ostream& out, std::istream* input = nullptr);
 

@@ -20,6 +20,8 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_option("--threads", options.threads, "worker threads of the multithread engine")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--seed", options.seed, "seed of the run's random stream");
+  app.add_option("--run-index", options.run_index,
+                 "which run of the seed to replay (smcbip check numbers its runs from 0)");
   app.add_option("-l,--limit", options.limit, "stop after this many steps")
       ->check(CLI::PositiveNumber);
   app.add_flag("--real-time", options.real_time, "follow the platform clock");
@@ -32,6 +34,17 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
   app.add_flag("-s,--silent", options.silent, "print no engine trace (errors still)");
   app.add_flag("--explore", options.explore, "enumerate the reachable states (untimed)");
+  app.add_flag_callback(
+      "--stochastic", [&options] { options.stochastic = true; },
+      "race planned dates (the default when the model has @stochastic ports)");
+  app.add_flag_callback(
+      "--no-stochastic", [&options] { options.stochastic = false; },
+      "use the reference engine's random choice even with @stochastic ports");
+  app.add_option_function<double>(
+         "--unbounded-mean",
+         [&options](double ms) { options.unbounded_mean = static_cast<TimeValue>(ms * 1e6); },
+         "stochastic mode: mean delay (ms) of items with no deadline (default 1)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--trace", options.trace, "trace format")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},

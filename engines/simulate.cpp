@@ -1,4 +1,5 @@
-// One simulation run: the reference engine's scheduling loop over the shared semantics.
+// Simulation runs: the scheduling loop over the shared semantics, in simulated or real time,
+// with the reference engine's random choice or the stochastic race of planned dates.
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -6,16 +7,19 @@
 
 #include "engines/engines.h"
 #include "engines/explore.h"
+#include "engines/interactive.h"
 #include "engines/semantics/runtime.h"
+#include "engines/stochastic/date_planner.h"
+#include "engines/trace/jsonl_trace.h"
 #include "engines/trace/text_trace.h"
 
 namespace smcbip::engines {
 
 namespace {
 
-/// The date an item is planned at: uniform over the (integer nanosecond) points of a bounded
-/// window; on an unbounded one the left end plus an exponential delay of mean 10 ns, as the
-/// reference engine's Interval::random does.
+/// The date an item is planned at by the reference scheduler: uniform over the (integer
+/// nanosecond) points of a bounded window; on an unbounded one the left end plus an
+/// exponential delay of mean 10 ns, as the reference engine's Interval::random does.
 TimeValue random_date(const Interval& interval, RandomStream& random) {
   const TimeValue first = interval.first();
   if (interval.bounded()) {
@@ -40,17 +44,79 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
   return r;
 }
 
+StepInfo step_info(const Item& item, const Runtime& runtime, std::uint64_t step, TimeValue at) {
+  StepInfo info;
+  info.step = step;
+  info.time = at;
+  switch (item.kind) {
+    case Item::Kind::Interaction:
+      info.fired = StepInfo::Fired::Interaction;
+      info.connector = runtime.values()[item.value].connector;
+      break;
+    case Item::Kind::Internal:
+      info.fired = StepInfo::Fired::Internal;
+      break;
+    case Item::Kind::External:
+      info.fired = StepInfo::Fired::External;
+      break;
+  }
+  if (item.kind != Item::Kind::Interaction) {
+    info.atom = item.atom;
+    info.port = item.port;
+  }
+  return info;
+}
+
+}  // namespace
+
+struct Simulator::Shared {
+  const bipc::ir::System& system;
+  SimulateOptions options;
+  Layout layout;
+  StringPool strings;
+  BoundFunctions functions;
+  CustomDistributions custom;
+  std::string problem;
+  std::uint64_t seed = 0;
+  bool stochastic = false;
+
+  Shared(const bipc::ir::System& s, const SimulateOptions& o) : system(s), options(o) {}
+};
+
+namespace {
+
+/// The observers of one run: the caller's, and the JSON-lines writer when asked for.
+class Observers : public RunObserver {
+ public:
+  Observers(RunObserver* user, JsonlTrace* jsonl) : user_(user), jsonl_(jsonl) {}
+  bool observe(const StepInfo& step, const StateView& state) override {
+    if (jsonl_) jsonl_->observe(step, state);
+    return !user_ || user_->observe(step, state);
+  }
+  void finish(RunEnd end, int code, const std::string& message) override {
+    if (jsonl_) jsonl_->finish(end, code, message);
+    if (user_) user_->finish(end, code, message);
+  }
+
+ private:
+  RunObserver* user_;
+  JsonlTrace* jsonl_;
+};
+
 class Simulation {
  public:
-  Simulation(const bipc::ir::System& system, const SimulateOptions& options, const Layout& layout,
-             const BoundFunctions& functions, StringPool& strings, std::ostream& out,
-             std::uint64_t seed)
-      : options_(options),
-        out_(out),
-        seed_(seed),
-        random_(seed, options.run_index),
-        runtime_(system, layout, functions, strings, out, random_, runtime_options(options)),
-        verbose_(!options.silent && options.trace == TraceFormat::Text) {}
+  Simulation(Simulator::Shared& shared, std::uint64_t run_index, const RunStreams& streams,
+             RunObserver& observer)
+      : shared_(shared),
+        options_(shared.options),
+        out_(streams.trace),
+        input_(streams.input),
+        observer_(observer),
+        random_(shared.seed, run_index),
+        runtime_(shared.system, shared.layout, shared.functions, shared.strings, streams.model,
+                 random_, runtime_options(shared.options)),
+        planner_(shared.system, shared.custom, random_, shared.options.unbounded_mean),
+        verbose_(!options_.silent && options_.trace == TraceFormat::Text) {}
 
   RunResult explore() {
     if (!options_.silent) {
@@ -69,41 +135,36 @@ class Simulation {
       line("BIP Engine (version " SMCBIP_VERSION_TEXT " )");
       line("");
       line("initialize components...");
-      line("random scheduling based on seed=" + std::to_string(seed_));
+      line("random scheduling based on seed=" + std::to_string(shared_.seed));
     }
     start_ = std::chrono::steady_clock::now();
     if (!runtime_.initialize()) return error();
     // The reference engine resumes pending atoms (initial `resume`) before the first step.
-    if (options_.real_time) {
-      if (!runtime_.compute_items()) return error();
-      if (!check_time_safety()) return error_result_;
-    } else if (!runtime_.resume_atoms(0)) {
-      return error();
-    }
+    if (!after_step(0)) return error_result_;
+    if (!observe(StepInfo{})) return stopped();
     for (;;) {
       if (!runtime_.compute_items()) return error();
       const auto& items = runtime_.items();
       if (items.empty()) return finish_without_items();
       if (options_.limit && steps_ >= *options_.limit) {
         header("stop (reached limit of " + std::to_string(*options_.limit) + " states)");
-        return {kRunOk, RunEnd::Limit, steps_, {}};
+        return end({kRunOk, RunEnd::Limit, steps_, {}});
       }
-      const auto [chosen, date] = choose();
+      std::optional<std::pair<std::size_t, TimeValue>> choice = choose();
+      if (!choice) return ended_ ? *ended_ : timelock();
+      const auto [chosen, date] = *choice;
       if (verbose_) {
-        write_state(out_, runtime_, steps_);
+        if (!options_.interactive) write_state(out_, runtime_, steps_);
         line("-> choose [" + std::to_string(chosen) + "] " +
              item_text(runtime_, items[chosen], false) + " at global time " + format_time(date));
       }
       const Item item = items[chosen];
+      const StepInfo info = step_info(item, runtime_, steps_ + 1, date);
       if (options_.real_time) wait_until(date);
       if (!runtime_.execute(item, date)) return error();
       ++steps_;
-      if (options_.real_time) {
-        if (!runtime_.compute_items()) return error();
-        if (!check_time_safety()) return error_result_;
-      } else if (!runtime_.resume_atoms(date)) {
-        return error();
-      }
+      if (!after_step(date)) return error_result_;
+      if (!observe(info)) return stopped();
     }
   }
 
@@ -116,24 +177,76 @@ class Simulation {
     }
   }
 
-  RunResult error() {
-    const ModelError& e = runtime_.error();
-    line("ERROR: " + e.message);
-    return {e.code, RunEnd::Error, steps_, e.message};
+  bool observe(const StepInfo& info) {
+    const StateView view(shared_.system, shared_.layout, runtime_.state(), shared_.strings);
+    return observer_.observe(info, view);
+  }
+
+  RunResult end(RunResult result) {
+    observer_.finish(result.end, result.code, result.message);
+    ended_ = result;
+    return result;
+  }
+
+  RunResult stopped() { return end({kRunOk, RunEnd::Stopped, steps_, {}}); }
+
+  RunResult fail(int code, const std::string& message) {
+    if (options_.trace == TraceFormat::Text || code == kTimeSafetyViolation) {
+      line("ERROR: " + message);
+    }
+    error_result_ = {code, RunEnd::Error, steps_, message};
+    return end(error_result_);
+  }
+
+  RunResult error() { return fail(runtime_.error().code, runtime_.error().message); }
+
+  /// Resumes pending atoms after a step (simulated time) or checks time safety (real time).
+  bool after_step(TimeValue date) {
+    if (!options_.real_time) {
+      if (runtime_.resume_atoms(date)) return true;
+      error_result_ = error();
+      return false;
+    }
+    if (!runtime_.compute_items()) {
+      error_result_ = error();
+      return false;
+    }
+    return check_time_safety();
   }
 
   RunResult finish_without_items() {
     const Interval w = runtime_.wait_interval();
     if (w.right == kPlusInfinity) {
       header("deadlock!");
-      return {kRunOk, RunEnd::Deadlock, steps_, {}};
+      return end({kRunOk, RunEnd::Deadlock, steps_, {}});
     }
-    header(std::string("time-lock ") + (w.right_open ? "right before " : "at ") +
-           format_time(w.right) + "!");
-    return {kRunOk, RunEnd::Timelock, steps_, {}};
+    return timelock();
   }
 
-  std::pair<std::size_t, TimeValue> choose() {
+  RunResult timelock() {
+    const Interval w = runtime_.wait_interval();
+    header(std::string("time-lock ") + (w.right_open ? "right before " : "at ") +
+           format_time(w.right) + "!");
+    return end({kRunOk, RunEnd::Timelock, steps_, {}});
+  }
+
+  std::optional<std::pair<std::size_t, TimeValue>> choose() {
+    if (options_.interactive) {
+      if (verbose_) write_state(out_, runtime_, steps_);
+      const std::optional<std::size_t> picked = prompt_choice(out_, input_, runtime_.items().size());
+      if (!picked) {
+        stopped();
+        return std::nullopt;
+      }
+      const Interval& window = runtime_.items()[*picked].constraint.interval;
+      return std::pair{*picked, earliest(window, runtime_.state().now)};
+    }
+    if (shared_.stochastic) return race();
+    return std::pair{random_choice()};
+  }
+
+  /// The reference scheduler: every item draws a date in its window, the earliest wins.
+  std::pair<std::size_t, TimeValue> random_choice() {
     const auto& items = runtime_.items();
     const TimeValue now = runtime_.state().now;
     std::size_t best = 0, ties = 0;
@@ -154,6 +267,37 @@ class Simulation {
       }
     }
     return {best, std::max(best_date, now)};
+  }
+
+  /// Stochastic mode: the earliest planned date that lies in its item's window wins.
+  std::optional<std::pair<std::size_t, TimeValue>> race() {
+    std::string problem;
+    if (!planner_.plan(runtime_, dates_, problem)) {
+      fail(kInputError, problem);
+      return std::nullopt;
+    }
+    std::optional<std::pair<std::size_t, TimeValue>> best = earliest_in_window();
+    if (!best) {
+      planner_.replan_within_windows(runtime_, dates_);
+      best = earliest_in_window();
+    }
+    return best;
+  }
+
+  std::optional<std::pair<std::size_t, TimeValue>> earliest_in_window() {
+    const auto& items = runtime_.items();
+    std::optional<std::pair<std::size_t, TimeValue>> best;
+    std::uint64_t ties = 0;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (!items[i].constraint.interval.contains(dates_[i])) continue;
+      if (!best || dates_[i] < best->second) {
+        best = std::pair{i, dates_[i]};
+        ties = 1;
+      } else if (dates_[i] == best->second && random_.below(++ties) == 0) {
+        best->first = i;
+      }
+    }
+    return best;
   }
 
   TimeValue platform_now() const {
@@ -178,6 +322,7 @@ class Simulation {
         out_ << kEnginePrefix << "  " << text << "\n";
       }
       error_result_ = {kTimeSafetyViolation, RunEnd::Error, steps_, "time-safety violation"};
+      end(error_result_);
       return false;
     }
     if (!runtime_.resume_atoms(t)) {
@@ -187,31 +332,57 @@ class Simulation {
     return true;
   }
 
+  Simulator::Shared& shared_;
   const SimulateOptions& options_;
   std::ostream& out_;
-  std::uint64_t seed_;
+  std::istream* input_;
+  RunObserver& observer_;
   RandomStream random_;
   Runtime runtime_;
+  DatePlanner planner_;
   bool verbose_;
   std::uint64_t steps_ = 0;
+  std::vector<TimeValue> dates_;
   std::chrono::steady_clock::time_point start_;
   RunResult error_result_;
+  std::optional<RunResult> ended_;  // set once the run has ended (error, stop)
 };
 
 }  // namespace
 
-RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
-                   const Externs& externs, std::ostream& out, std::istream* /*input*/) {
-  Layout layout;
-  if (std::string problem = build_layout(system, layout); !problem.empty()) {
-    return {kInputError, RunEnd::Error, 0, problem};
+Simulator::Simulator(const bipc::ir::System& system, const SimulateOptions& options,
+                     const Externs& externs)
+    : shared_(std::make_unique<Shared>(system, options)) {
+  Shared& s = *shared_;
+  s.problem = build_layout(system, s.layout);
+  if (s.problem.empty()) bind_functions(system, externs, s.strings, s.functions);
+  if (s.problem.empty()) s.problem = load_custom_distributions(system, s.custom);
+  s.seed = options.seed ? *options.seed : std::random_device{}();
+  s.stochastic = options.stochastic.value_or(has_stochastic_ports(system));
+}
+
+Simulator::~Simulator() = default;
+
+const std::string& Simulator::problem() const { return shared_->problem; }
+bool Simulator::stochastic() const { return shared_->stochastic; }
+std::uint64_t Simulator::seed() const { return shared_->seed; }
+
+RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
+                         RunObserver* observer) {
+  if (!shared_->problem.empty()) return {kInputError, RunEnd::Error, 0, shared_->problem};
+  std::optional<JsonlTrace> jsonl;
+  if (shared_->options.trace == TraceFormat::Jsonl && !shared_->options.silent) {
+    jsonl.emplace(streams.trace, shared_->layout);
   }
-  StringPool strings;
-  BoundFunctions functions;
-  bind_functions(system, externs, strings, functions);
-  const std::uint64_t seed = options.seed ? *options.seed : std::random_device{}();
-  Simulation simulation(system, options, layout, functions, strings, out, seed);
-  return options.explore ? simulation.explore() : simulation.run();
+  Observers observers(observer, jsonl ? &*jsonl : nullptr);
+  Simulation simulation(*shared_, run_index, streams, observers);
+  return shared_->options.explore ? simulation.explore() : simulation.run();
+}
+
+RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
+                   const Externs& externs, std::ostream& out, std::istream* input) {
+  Simulator simulator(system, options, externs);
+  return simulator.run(options.run_index, RunStreams{out, out, input});
 }
 
 }  // namespace smcbip::engines

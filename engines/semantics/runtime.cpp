@@ -663,18 +663,19 @@ bool Runtime::compute_items() {
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
       if (!values_[v].after.interval.empty()) {
-        items_.push_back({Item::Kind::Interaction, v, 0, 0, values_[v].after});
+        items_.push_back({Item::Kind::Interaction, v, 0, 0, values_[v].after, {}});
       }
     }
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
-    if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint});
+    if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint, {}});
   }
   const Interval w = wait_interval();
   std::vector<Item> listed;
   for (Item item : items_) {
+    item.offered = item.constraint;
     item.constraint.interval = item.constraint.interval.intersect(w);
     if (!item.constraint.interval.empty()) listed.push_back(item);
   }

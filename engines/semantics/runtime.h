@@ -65,7 +65,8 @@ struct Item {
   enum class Kind : std::uint8_t { Interaction, Internal, External } kind = Kind::Interaction;
   Index value = 0;           // Interaction: index into values()
   Index atom = 0, port = 0;  // Internal / External
-  Constraint constraint;
+  Constraint constraint;     // cut to the admissible waiting interval from now
+  Constraint offered;        // before that cut: unchanged while the item's atoms do not move
 };
 
 /// How the semantics is computed: the schedulers share it and differ only here.
@@ -117,6 +118,12 @@ class Runtime {
 
   /// The atom ports (atom, port) an item fires, in execution order.
   std::vector<std::pair<Index, Index>> atom_ports(const Item& item) const;
+  /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
+  double clock_value(Index atom, Index clock, TimeValue at) const;
+  /// The first date from `now` at which that clock reaches `value` (kPlusInfinity if never).
+  TimeValue clock_reaches(Index atom, Index clock, double value) const;
+  /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now.
+  std::vector<double> stochastic_params(Index atom, Index port);
   /// `holder.port(d=1;)` entries of an interaction, as the trace prints them.
   std::string format_ports(const InteractionValue& value) const;
   /// The violated deadlines at `now` (real time), as trace lines without the prefix.

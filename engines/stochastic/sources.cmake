@@ -2,3 +2,4 @@
 list(APPEND ENGINES_SOURCES
   stochastic/random_stream.cpp
   stochastic/distributions.cpp)
+list(APPEND ENGINES_SOURCES stochastic/date_planner.cpp)

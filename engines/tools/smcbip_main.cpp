@@ -28,8 +28,11 @@ int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateO
   }
   const engines::Externs externs = engines::Externs::with_builtins();
   std::ios::sync_with_stdio(false);
-  const engines::RunResult run = engines::simulate(*result.system, options, externs, std::cout,
-                                                   &std::cin);
+  // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
+  std::ostream& model_output = options.trace == engines::TraceFormat::Jsonl ? std::cerr : std::cout;
+  engines::Simulator simulator(*result.system, options, externs);
+  const engines::RunResult run =
+      simulator.run(options.run_index, engines::RunStreams{std::cout, model_output, &std::cin});
   std::cout.flush();
   if (run.code == engines::kInputError || run.code == engines::kInternalError ||
       run.code == engines::kUsageError) {

@@ -1,14 +1,8 @@
 // Tests of the random streams and firing-date distributions of the stochastic engine.
 //
-// Goodness of fit: one-sample Kolmogorov-Smirnov tests, n = 10,000 samples from a fixed seed,
-// significance alpha = 0.001. Under H0 (the samples follow F, F continuous), sqrt(n)·D_n tends
-// in law to the Kolmogorov distribution, P(K > x) = 2·sum_{k>=1} (-1)^(k-1) exp(-2k²x²). At the
-// critical point the first term alone is exact to 2·exp(-8x²) ~ 1e-13, so
-// K_alpha = sqrt(-ln(alpha/2) / 2) = 1.9495 for alpha = 0.001. The finite-n error is of order
-// 1/sqrt(n): Stephens' (1970) correction multiplies sqrt(n) by 1 + 0.12/n^(1/2) + ..., i.e.
-// changes the statistic by 0.12% at n = 10,000, well inside any margin that matters here.
-// With fixed seeds each test is deterministic; a correct sampler fails a given one with
-// probability 0.001 over the choice of seed.
+// Goodness of fit: one-sample Kolmogorov-Smirnov tests (see kolmogorov.h), n = 10,000 samples
+// from a fixed seed, significance alpha = 0.001. With fixed seeds each test is deterministic; a
+// correct sampler fails a given one with probability 0.001 over the choice of seed.
 #include "engines/stochastic/distributions.h"
 
 #include <gsl/gsl_cdf.h>
@@ -31,6 +25,7 @@
 #include <vector>
 
 #include "engines/stochastic/random_stream.h"
+#include "kolmogorov.h"
 
 namespace smcbip::engines {
 namespace {
@@ -41,24 +36,9 @@ using bipc::ir::Distribution;
 static_assert(std::uniform_random_bit_generator<RandomStream>);
 
 constexpr std::size_t kSamples = 10000;
-constexpr double kAlpha = 0.001;
-// sqrt(-ln(alpha/2) / 2): the asymptotic Kolmogorov critical value (see the file comment).
-const double kKolmogorovCritical = std::sqrt(-0.5 * std::log(kAlpha / 2.0));
+const double kKolmogorovCritical = tests::kolmogorov_critical();
+using tests::kolmogorov_statistic;
 
-// sqrt(n)·D_n with D_n = sup_x |F_n(x) - F(x)|, attained at a sample point from the left or
-// the right: max over sorted x_(i) of i/n - F(x_(i)) and F(x_(i)) - (i-1)/n.
-double kolmogorov_statistic(std::vector<double> samples, const std::function<double(double)>& f) {
-  std::sort(samples.begin(), samples.end());
-  const double n = static_cast<double>(samples.size());
-  double d = 0.0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const double fx = f(samples[i]);
-    d = std::max({d, static_cast<double>(i + 1) / n - fx, fx - static_cast<double>(i) / n});
-  }
-  return std::sqrt(n) * d;
-}
-
-// The helpers throw on unexpected errors: GoogleTest reports the message and fails the test.
 DateDistribution make(Distribution kind, std::vector<double> params,
                       const EmpiricalCdf* custom = nullptr) {
   auto made = DateDistribution::make(kind, params, custom);
@@ -206,7 +186,7 @@ TEST(RandomStream, BelowIsInRangeAndUnbiased) {
   const double expected = static_cast<double>(kDraws) / kCells;
   double chi2 = 0.0;
   for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
-  EXPECT_LT(chi2, gsl_cdf_chisq_Qinv(kAlpha, kCells - 1));
+  EXPECT_LT(chi2, gsl_cdf_chisq_Qinv(tests::kKsAlpha, kCells - 1));
   EXPECT_EQ(r.below(1), 0u);
   // A bound just above 2^63: half the 64-bit range is rejected, results stay below it.
   const std::uint64_t big = (std::uint64_t{1} << 63) + 12345;

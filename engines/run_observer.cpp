@@ -1,0 +1,32 @@
+#include "engines/run_observer.h"
+
+#include "engines/interpreter/code_eval.h"
+#include "engines/semantics/layout.h"
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+TimeValue StateView::now() const { return state_.now; }
+
+bool StateView::marked(bipc::ir::Index atom, bipc::ir::Index place) const {
+  return state_.marking[layout_.atom_places[atom] + place] != 0;
+}
+
+Val StateView::data(bipc::ir::Index atom, bipc::ir::Index slot) const {
+  return state_.data[layout_.atom_data[atom] + slot];
+}
+
+double StateView::clock(bipc::ir::Index atom, bipc::ir::Index clock) const {
+  const std::size_t slot = layout_.atom_clocks[atom] + clock;
+  return CodeEvaluator::clock_value(state_.clocks[slot], layout_.clock_units[slot], state_.now);
+}
+
+std::string_view StateView::text(Val v) const {
+  return strings_.text(v.s);
+}
+
+const std::string& StateView::atom_name(bipc::ir::Index atom) const {
+  return layout_.atom_names[atom];
+}
+
+}  // namespace smcbip::engines

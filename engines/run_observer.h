@@ -1,0 +1,68 @@
+// What a run shows to those who watch it (trace writers, the online monitors of smc): the state
+// after each step, which item fired, and when. An observer may stop the run.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "bipc/ir/ir.h"
+#include "engines/time_value.h"
+#include "engines/value.h"
+
+namespace smcbip::engines {
+
+struct Layout;
+struct RunState;
+class StringPool;
+
+/// A read-only view of a run's state; valid only during the observer call that receives it.
+class StateView {
+ public:
+  StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
+            const StringPool& strings)
+      : system_(system), layout_(layout), state_(state), strings_(strings) {}
+
+  const bipc::ir::System& system() const { return system_; }
+  TimeValue now() const;
+  /// Whether place `place` of atom `atom` (indices into the IR) is marked.
+  bool marked(bipc::ir::Index atom, bipc::ir::Index place) const;
+  /// Data variable `slot` of atom `atom` (kind: the IR's declared type).
+  Val data(bipc::ir::Index atom, bipc::ir::Index slot) const;
+  /// Clock `clock` of atom `atom` now, in the clock's unit.
+  double clock(bipc::ir::Index atom, bipc::ir::Index clock) const;
+  /// The text of a string value.
+  std::string_view text(Val v) const;
+  /// The atom's full name as traces print it (`ROOT.a.b`).
+  const std::string& atom_name(bipc::ir::Index atom) const;
+
+ private:
+  const bipc::ir::System& system_;
+  const Layout& layout_;
+  const RunState& state_;
+  const StringPool& strings_;
+};
+
+/// The step that led to a state: the initial state is step 0 and fired nothing.
+struct StepInfo {
+  enum class Fired : std::uint8_t { Nothing, Interaction, Internal, External } fired =
+      Fired::Nothing;
+  std::uint64_t step = 0;
+  TimeValue time = 0;
+  bipc::ir::Index connector = bipc::ir::kNone;     // Interaction
+  bipc::ir::Index atom = bipc::ir::kNone, port = bipc::ir::kNone;  // Internal, External
+};
+
+enum class RunEnd : std::uint8_t { Deadlock, Timelock, Limit, Stopped, Error };
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  /// Called with the initial state, then after every step; returning false stops the run.
+  virtual bool observe(const StepInfo& step, const StateView& state) = 0;
+  /// Called once when the run ends (also when an observer stopped it); `message` names the
+  /// error of an Error end.
+  virtual void finish(RunEnd /*end*/, int /*code*/, const std::string& /*message*/) {}
+};
+
+}  // namespace smcbip::engines

@@ -1,0 +1,36 @@
+// What the stochastic date planner asks of a running atom: clock values, the date a clock
+// reaches a value, and the evaluated parameters of a port's @stochastic annotation.
+#include <cmath>
+
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+double Runtime::clock_value(Index atom, Index clock, TimeValue at) const {
+  const std::size_t slot = layout_.atom_clocks[atom] + clock;
+  return CodeEvaluator::clock_value(state_.clocks[slot], layout_.clock_units[slot], at);
+}
+
+TimeValue Runtime::clock_reaches(Index atom, Index clock, double value) const {
+  const std::size_t slot = layout_.atom_clocks[atom] + clock;
+  const ClockState& c = state_.clocks[slot];
+  const double now_value = CodeEvaluator::clock_value(c, layout_.clock_units[slot], state_.now);
+  if (value <= now_value) return state_.now;
+  if (c.rate <= 0.0) return kPlusInfinity;
+  // Clocks are linear in the delay: value = now_value + rate * delay / unit.
+  const double delay =
+      std::ceil((value - now_value) * static_cast<double>(layout_.clock_units[slot]) / c.rate);
+  if (delay >= static_cast<double>(kPlusInfinity - state_.now)) return kPlusInfinity;
+  return state_.now + static_cast<TimeValue>(delay);
+}
+
+std::vector<double> Runtime::stochastic_params(Index atom, Index port) {
+  const auto& stochastic = system_.atom_types[system_.atoms[atom].type].ports[port].stochastic;
+  std::vector<double> params;
+  if (!stochastic) return params;
+  const Frame f = atom_frame(atom);
+  for (const bipc::ir::Code& code : stochastic->params) params.push_back(eval_.evaluate(code, f).f);
+  return params;
+}
+
+}  // namespace smcbip::engines

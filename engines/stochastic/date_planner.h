@@ -1,0 +1,72 @@
+// Stochastic scheduling (BIP.md, "Stochastic real-time extension"): every enabled item gets a
+// planned firing date and the earliest date wins the race. Dates follow the generalised
+// semi-Markov reading of SBIP (Nouri et al., 2017): a date stays planned while its item stays
+// enabled with the same constraint, and is drawn afresh once the item was disabled or its
+// constraint changed.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/semantics/runtime.h"
+#include "engines/stochastic/distributions.h"
+#include "engines/stochastic/random_stream.h"
+
+namespace smcbip::engines {
+
+/// The empirical CDFs of a system's `custom` ports, by file.
+using CustomDistributions = std::map<std::string, EmpiricalCdf>;
+
+/// Reads the empirical CDF files of `system`'s custom ports into `out`; a message naming the
+/// file on failure.
+std::string load_custom_distributions(const bipc::ir::System& system, CustomDistributions& out);
+
+/// Whether some port of `system` carries a @stochastic annotation.
+bool has_stochastic_ports(const bipc::ir::System& system);
+
+class DatePlanner {
+ public:
+  /// `unbounded_mean`: the mean delay (ns) of the exponential date of an item whose window has
+  /// no right end.
+  DatePlanner(const bipc::ir::System& system, const CustomDistributions& custom,
+              RandomStream& random, TimeValue unbounded_mean);
+
+  /// A date for each item of `runtime`, in item order: the item's stochastic port decides it
+  /// when it has one, its urgency and window otherwise. False with `error` set when a date
+  /// cannot be drawn (a missed support or invalid distribution parameters).
+  bool plan(Runtime& runtime, std::vector<TimeValue>& dates, std::string& error);
+
+  /// When no planned date falls in its item's current window (deadlines of invariants or
+  /// resumes cut them all), the timed items draw again within their current windows.
+  void replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates);
+
+ private:
+  struct Planned {
+    Constraint offered;
+    TimeValue date = 0;
+  };
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint32_t>& key) const;
+  };
+  using Plans = std::unordered_map<std::vector<std::uint32_t>, Planned, KeyHash>;
+
+  /// Identifies an item across steps: its connector (or atom port) and the atom ports it fires.
+  std::vector<std::uint32_t> key_of(const Runtime& runtime, const Item& item) const;
+  bool draw(Runtime& runtime, const Item& item, TimeValue& date, std::string& error);
+  bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
+                       TimeValue& date, std::string& error);
+  TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
+  bool is_stochastic(const Runtime& runtime, const Item& item) const;
+
+  const bipc::ir::System& system_;
+  RandomStream& random_;
+  TimeValue unbounded_mean_;
+  const CustomDistributions& custom_;
+  Plans plans_, next_plans_;
+};
+
+}  // namespace smcbip::engines
