@@ -145,7 +145,12 @@ class Simulation {
     for (;;) {
       if (!runtime_.compute_items()) return error();
       const auto& items = runtime_.items();
-      if (items.empty()) return finish_without_items();
+      const std::optional<TimeValue> arrival = runtime_.next_unexpected_arrival();
+      if (items.empty()) {
+        if (!arrival || !runtime_.wait_interval().contains(*arrival)) return finish_without_items();
+        if (!receive_unexpected_events(*arrival)) return error();
+        continue;
+      }
       if (options_.limit && steps_ >= *options_.limit) {
         header("stop (reached limit of " + std::to_string(*options_.limit) + " states)");
         return end({kRunOk, RunEnd::Limit, steps_, {}});
@@ -153,6 +158,10 @@ class Simulation {
       std::optional<std::pair<std::size_t, TimeValue>> choice = choose();
       if (!choice) return ended_ ? *ended_ : timelock();
       const auto [chosen, date] = *choice;
+      if (arrival && *arrival <= date) {
+        if (!receive_unexpected_events(*arrival)) return error();
+        continue;
+      }
       if (verbose_) {
         if (!options_.interactive) write_state(out_, runtime_, steps_);
         line("-> choose [" + std::to_string(chosen) + "] " +
@@ -175,6 +184,12 @@ class Simulation {
       line("state #" + std::to_string(steps_) + " and global time " +
            format_time(runtime_.state().now) + ": " + summary);
     }
+  }
+
+  /// Extern events that no port can take arrive at `date` (in real time, once it has come).
+  bool receive_unexpected_events(TimeValue date) {
+    if (options_.real_time) wait_until(date);
+    return runtime_.receive_unexpected_events(date);
   }
 
   bool observe(const StepInfo& info) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -47,6 +48,8 @@ struct BoundFunctions {
   std::vector<const Externs::Function*> functions;  // per System::functions entry
   std::vector<std::vector<ValueKind>> arg_kinds;
   std::vector<std::uint64_t> string_ids;  // per System::strings entry, interned
+  /// Extern-port classes by backend name (`as "<class>"`); null when none is registered.
+  std::map<std::string, const ExternPortFactory*> port_classes;
 };
 
 /// Resolves the system's extern functions against a registry and interns its string literals;

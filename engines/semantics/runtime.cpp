@@ -90,6 +90,7 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
                  RandomStream& random, const RuntimeOptions& options)
     : system_(system),
       layout_(layout),
+      functions_(functions),
       strings_(strings),
       call_{out, strings, &random, {}},
       eval_(system, functions, call_),
@@ -127,6 +128,7 @@ bool Runtime::initialize() {
   state_.clocks.assign(layout_.clock_count, ClockState{});
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
+  if (!open_extern_ports()) return false;
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       const AtomType& type = system_.atom_types[system_.atoms[a].type];
@@ -672,6 +674,7 @@ bool Runtime::compute_items() {
     const auto& v = port_values_[port_offset_[atom] + port];
     if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint, {}});
   }
+  collect_extern_items();
   const Interval w = wait_interval();
   std::vector<Item> listed;
   for (Item item : items_) {
@@ -694,6 +697,9 @@ Interval Runtime::wait_interval() const {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
     if (v) w = w.intersect(wait(v->constraint, state_.now));
+  }
+  for (const ExternPortState& e : extern_ports_) {
+    if (e.expected) w = w.intersect(wait(*e.expected, state_.now));
   }
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     w = w.intersect(state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
@@ -770,6 +776,7 @@ bool Runtime::execute(const Item& item, TimeValue at) {
   state_.now = at;
   try {
     if (item.kind == Item::Kind::Interaction) return execute_value(item.value);
+    if (item.kind == Item::Kind::External) return fire_extern(item);
     return fire_port(item.atom, item.port);
   } catch (const CodeFault& fault) {
     return fail(kInternalError, fault.message);

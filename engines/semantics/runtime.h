@@ -69,6 +69,16 @@ struct Item {
   Constraint offered;        // before that cut: unchanged while the item's atoms do not move
 };
 
+/// An extern port's event source and the event at the head of its queue (pulled lazily).
+struct ExternPortState {
+  Index atom = 0, port = 0;
+  std::unique_ptr<ExternPortSource> source;
+  std::optional<ExternEvent> head;
+  bool exhausted = false;
+  std::optional<Constraint> expected;  // the head event's item, when its port can take it
+  bool unexpected = false;             // the head's port cannot take it (policy error, ignore)
+};
+
 /// How the semantics is computed: the schedulers share it and differ only here.
 struct RuntimeOptions {
   bool maximal_progress = true;
@@ -116,6 +126,11 @@ class Runtime {
   const Layout& layout() const { return layout_; }
   const bipc::ir::System& system() const { return system_; }
 
+  /// The earliest date at which a pending extern event that its port cannot take arrives.
+  std::optional<TimeValue> next_unexpected_arrival() const;
+  /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
+  /// 6, policy ignore drops them. False with error() set on error 6.
+  bool receive_unexpected_events(TimeValue upto);
   /// The atom ports (atom, port) an item fires, in execution order.
   std::vector<std::pair<Index, Index>> atom_ports(const Item& item) const;
   /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
@@ -152,9 +167,13 @@ class Runtime {
   bool execute_value(Index value);
   bool fire_port(Index atom, Index port);
   bool fail(int code, std::string message);
+  bool open_extern_ports();
+  void collect_extern_items();
+  bool fire_extern(const Item& item);
 
   const bipc::ir::System& system_;
   const Layout& layout_;
+  const BoundFunctions& functions_;
   StringPool& strings_;
   CallContext call_;
   CodeEvaluator eval_;
@@ -171,6 +190,7 @@ class Runtime {
   std::vector<std::uint8_t> connector_done_;
   std::vector<InteractionValue> values_;
   std::vector<Item> items_;
+  std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
 };
 
 }  // namespace smcbip::engines

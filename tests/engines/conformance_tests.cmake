@@ -9,3 +9,4 @@ set(ENGINES_REALTIME_TEST_SOURCES
   conformance_realtime_test.cpp
   conformance_externs.cpp
   trace_oracles.cpp)
+list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp)

@@ -1,0 +1,115 @@
+// Extern ports: events from sources registered in C++ (`extern port T p(x) as "<class>"
+// remember|ignore|error`). An event is taken by its port when a transition labelled by the port
+// is enabled and can run at or after the event's date; otherwise its policy decides: remember
+// keeps it until the port can take it, ignore drops it when it arrives, error stops the run
+// with error 6 when it arrives (the reference engine's checkExternals).
+#include <algorithm>
+
+#include "engines/engines.h"
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+bool Runtime::open_extern_ports() {
+  extern_ports_.clear();
+  for (const auto& [atom, port] : layout_.extern_ports) {
+    const bipc::ir::Port& p = system_.atom_types[system_.atoms[atom].type].ports[port];
+    const auto found = functions_.port_classes.find(p.backend_name);
+    if (found == functions_.port_classes.end() || found->second == nullptr) {
+      return fail(kInputError, "no extern port class \"" + p.backend_name +
+                                   "\" is registered (port " + p.name + " of " +
+                                   layout_.atom_names[atom] + ")");
+    }
+    ExternPortState state;
+    state.atom = atom;
+    state.port = port;
+    state.source = (*found->second)(system_.atoms[atom].path, p.name);
+    extern_ports_.push_back(std::move(state));
+  }
+  return true;
+}
+
+void Runtime::collect_extern_items() {
+  for (ExternPortState& e : extern_ports_) {
+    e.expected.reset();
+    e.unexpected = false;
+    if (state_.resume_pending[e.atom]) continue;
+    if (!e.head && !e.exhausted) {
+      e.head = e.source->next(state_.now);
+      e.exhausted = !e.head;
+    }
+    if (!e.head) continue;
+    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+    const auto& offer = port_values_[port_offset_[e.atom] + e.port];
+    const TimeValue at = e.head->time;
+    const bool outdated = at < state_.now;
+    std::optional<Constraint> taken;
+    if (offer) {
+      Constraint c = offer->constraint;
+      c.interval = c.interval.intersect(Interval::from(std::max(at, state_.now)));
+      // An event outside its port's window is only taken when remembered.
+      const bool in_window = offer->constraint.interval.contains(at);
+      if (!c.interval.empty() &&
+          (port.policy == bipc::ExternPolicy::Remember || (!outdated && in_window))) {
+        taken = c;
+      }
+    }
+    if (taken) {
+      e.expected = taken;
+      items_.push_back({Item::Kind::External, 0, e.atom, e.port, *taken, {}});
+    } else if (port.policy != bipc::ExternPolicy::Remember) {
+      e.unexpected = true;
+    }
+  }
+}
+
+std::optional<TimeValue> Runtime::next_unexpected_arrival() const {
+  std::optional<TimeValue> first;
+  for (const ExternPortState& e : extern_ports_) {
+    if (!e.unexpected) continue;
+    const TimeValue at = std::max(e.head->time, state_.now);
+    if (!first || at < *first) first = at;
+  }
+  return first;
+}
+
+bool Runtime::receive_unexpected_events(TimeValue upto) {
+  for (ExternPortState& e : extern_ports_) {
+    if (!e.unexpected || std::max(e.head->time, state_.now) > upto) continue;
+    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+    if (port.policy == bipc::ExternPolicy::Ignore) {
+      e.head.reset();
+      e.unexpected = false;
+      continue;
+    }
+    const std::string& atom = layout_.atom_names[e.atom];
+    if (e.head->time < state_.now) {
+      return fail(kUnexpectedEvent, "port " + port.name + " of component " + atom +
+                                        " has received an outdated event at " +
+                                        format_time(e.head->time) +
+                                        " while current engine time is already " +
+                                        format_time(state_.now) + "!");
+    }
+    state_.now = e.head->time;
+    return fail(kUnexpectedEvent, "port " + port.name + " of component " + atom +
+                                      " has received an event at " + format_time(e.head->time) +
+                                      " while being disabled at current state and having event "
+                                      "consumption policy 'error'!");
+  }
+  return true;
+}
+
+bool Runtime::fire_extern(const Item& item) {
+  for (ExternPortState& e : extern_ports_) {
+    if (e.atom != item.atom || e.port != item.port) continue;
+    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+    Val* data = state_.data.data() + layout_.atom_data[e.atom];
+    const std::size_t n = std::min(port.data.size(), e.head->values.size());
+    for (std::size_t i = 0; i < n; ++i) data[port.data[i]] = e.head->values[i];
+    e.head.reset();
+    return fire_port(e.atom, e.port);
+  }
+  return true;
+}
+
+}  // namespace smcbip::engines
