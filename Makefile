@@ -24,6 +24,8 @@ demo: build
 	$(BUILD_DIR)/bin/bipc dot models/rover_watchdog.bip --root $(ROOT) -o $(BUILD_DIR)/rover_watchdog.svg
 	@echo "The architecture picture is in $(BUILD_DIR)/rover_watchdog.svg"
 	$(BUILD_DIR)/bin/smcbip simulate models/families/rendezvous_10.bip --root 'Top()' --seed 1 --limit 5
+	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 8
+	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 2 --trace jsonl
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -LE slow -j2
