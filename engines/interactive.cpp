@@ -18,7 +18,8 @@ std::string trimmed(const std::string& text) {
 std::optional<std::size_t> prompt_choice(std::ostream& out, std::istream* in, std::size_t count) {
   if (in == nullptr) return std::nullopt;
   for (;;) {
-    out << "choose an interaction [0-" << count - 1 << "] (q to quit): " << std::flush;
+    // A whole line, so that the trace stays line-oriented when the answers come from a pipe.
+    out << "choose an item [0-" << count - 1 << "] (q to quit):" << std::endl;
     std::string line;
     if (!std::getline(*in, line)) return std::nullopt;
     const std::string answer = trimmed(line);

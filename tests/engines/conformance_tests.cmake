@@ -10,3 +10,4 @@ set(ENGINES_REALTIME_TEST_SOURCES
   conformance_externs.cpp
   trace_oracles.cpp)
 list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES interactive_test.cpp)
