@@ -1,5 +1,6 @@
 // Conformance oracles of EXPECTED.md section 6, "Timed models and time-safety", in simulated
-// time (R02-R08, R12 run a); the wall-clock runs are in conformance_realtime_test.cpp.
+// time (R01 in simulated time, R02-R08, R12 run a); the wall-clock runs are in
+// conformance_realtime_test.cpp.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -31,6 +32,22 @@ TYPED_TEST(ConformanceTimed, R02_timed_tempcontrol) {
   auto options = this->options();
   options.silent = true;
   this->check_runs("running/timed_tempcontrol", "Top()", options, expect_tempcontrol_table);
+}
+
+// R01's model in simulated time (the oracle itself runs --real-time in the slow tier). Regression
+// test for priorities that ignored invariants: W1's write, dominated by W2's next window, was
+// masked although W1's invariant forces a step before that window opens, so every run
+// time-locked right after W2's first write.
+TYPED_TEST(ConformanceTimed, R01_writers_buffer_simulated_time) {
+  this->check_runs("running/writers_buffer", "Compound()", this->options(), [](const auto& run) {
+    EXPECT_EQ(run.result.code, kRunOk);
+    for (int k = 0; k <= 9; ++k) {
+      EXPECT_EQ(count(run.lines, "^New value: " + std::to_string(k) + "$"), 1u) << k;
+    }
+    EXPECT_EQ(count(run.lines, "^New value: "), 10u);
+    // After its 10 writes W1 can only wait for its invariant x <= 11.
+    EXPECT_EQ(last_state_header(run.lines), "time-lock at 11s!");
+  });
 }
 
 TYPED_TEST(ConformanceTimed, R03_clock_speed) {
