@@ -28,7 +28,7 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag("-a,--asap", options.asap, "plan each item at its earliest date");
   app.add_flag("-f,--first-enabled", options.first_enabled,
                "choose among the items that can run first");
-  app.add_flag("--relaxed", options.relaxed, "real time: tolerate late deadlines");
+  app.add_flag("--relaxed", options.relaxed, "real time: report missed deadlines as warnings and go on");
   app.add_flag("--disable-maximal-progress", options.disable_maximal_progress,
                "do not restrict connectors to their maximal interactions");
   app.add_flag("--interactive", options.interactive, "pick each item at a prompt");

@@ -325,20 +325,24 @@ class Simulation {
     std::this_thread::sleep_until(start_ + std::chrono::nanoseconds(date));
   }
 
-  /// Real time: the platform clock must still be inside the waiting and resume windows.
+  /// Real time: the platform clock must still be inside the waiting and resume windows. With
+  /// --relaxed a late platform is reported as a warning and the run goes on from the platform time.
   bool check_time_safety() {
     const TimeValue t = platform_now();
     const Interval allowed = runtime_.wait_interval().intersect(runtime_.resume_window());
-    if (!allowed.contains(t) && !(options_.relaxed && t >= allowed.right)) {
-      out_ << kEnginePrefix << "ERROR: " << kEnginePrefix << "state #" << steps_
-           << " and global time " << format_time(t)
+    if (!allowed.contains(t)) {
+      const bool tolerated = options_.relaxed && t >= allowed.right;
+      out_ << kEnginePrefix << (tolerated ? "WARNING: " : "ERROR: ") << kEnginePrefix << "state #"
+           << steps_ << " and global time " << format_time(t)
            << ": violation of the following timing constraints:\n";
       for (const std::string& text : runtime_.late_constraints(t)) {
         out_ << kEnginePrefix << "  " << text << "\n";
       }
-      error_result_ = {kTimeSafetyViolation, RunEnd::Error, steps_, "time-safety violation"};
-      end(error_result_);
-      return false;
+      if (!tolerated) {
+        error_result_ = {kTimeSafetyViolation, RunEnd::Error, steps_, "time-safety violation"};
+        end(error_result_);
+        return false;
+      }
     }
     if (!runtime_.resume_atoms(t)) {
       error_result_ = error();

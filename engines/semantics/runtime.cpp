@@ -482,8 +482,10 @@ bool Runtime::check_compound_priority_cycles() {
 void Runtime::restrict_by(Constraint& c, const Constraint& dominator) const {
   // A dominated value may only run where its dominator cannot (TimingConstraint::applyPriority
   // of the reference engine): after the dominator's window if that meets the waiting window,
-  // else before it.
-  const Interval window = wait(c, state_.now);
+  // else before it. Invariants and pending resumes bound the waiting window too: a dominator
+  // that time cannot reach before they force a step must not block the dominated value (else
+  // writers_buffer's W1 write, dominated by W2's next period beyond W1's invariant, time-locks).
+  const Interval window = wait(c, state_.now).intersect(time_bound_);
   const Interval meet = dominator.interval.intersect(window);
   Interval allowed;
   if (!meet.empty()) {
@@ -648,6 +650,7 @@ bool Runtime::compute_items() {
   items_.clear();
   connector_values_.assign(system_.connectors.size(), {});
   connector_done_.assign(system_.connectors.size(), 0);
+  time_bound_ = time_bound();
   if (!check_compound_priority_cycles()) return false;
   try {
     // Compounds bottom-up: a compound export of a sub-connector needs its values after
@@ -701,6 +704,11 @@ Interval Runtime::wait_interval() const {
   for (const ExternPortState& e : extern_ports_) {
     if (e.expected) w = w.intersect(wait(*e.expected, state_.now));
   }
+  return w.intersect(time_bound());
+}
+
+Interval Runtime::time_bound() const {
+  Interval w = Interval::all();
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     w = w.intersect(state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
   }

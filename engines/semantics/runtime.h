@@ -164,6 +164,9 @@ class Runtime {
   std::vector<RuleNode> low_side(const PriorityRule& rule) const;
   void add_defined(Index connector, std::vector<RuleNode>& out) const;
   void restrict_by(Constraint& c, const Constraint& dominator) const;
+  /// The atoms' clock invariants and pending resume windows intersected: time cannot pass
+  /// beyond it whatever is chosen.
+  Interval time_bound() const;
   bool execute_value(Index value);
   bool fire_port(Index atom, Index port);
   bool fail(int code, std::string message);
@@ -185,6 +188,7 @@ class Runtime {
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
+  Interval time_bound_;                   // time_bound() of the state items are computed in
   // Per connector: enabled interaction values (indices into values_), computed bottom up.
   std::vector<std::vector<Index>> connector_values_;
   std::vector<std::uint8_t> connector_done_;
