@@ -430,10 +430,14 @@ std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const
 }
 
 bool Runtime::check_compound_priority_cycles() {
-  for (const std::vector<PriorityRule>& rules : layout_.rules) {
+  acyclic_rule_sets_.resize(layout_.rules.size());
+  for (std::size_t compound = 0; compound < layout_.rules.size(); ++compound) {
+    const std::vector<PriorityRule>& rules = layout_.rules[compound];
     if (rules.empty()) continue;
     std::vector<bool> active(rules.size());
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
+    // The search depends only on which rules are active: a set found acyclic stays so.
+    if (acyclic_rule_sets_[compound].count(active)) continue;
     // Depth-first over the static rule chains from each low side (E/Interaction.cpp of the
     // reference engine): a high side included in an interaction already on the path closes
     // a cycle.
@@ -472,6 +476,7 @@ bool Runtime::check_compound_priority_cycles() {
         return fail(3, "cycle in priorities! (" + text + ")");
       }
     }
+    acyclic_rule_sets_[compound].insert(std::move(active));
   }
   return true;
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -195,6 +196,8 @@ class Runtime {
   std::vector<InteractionValue> values_;
   std::vector<Item> items_;
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
+  // Per compound: the sets of active priority rules already found free of cycles.
+  std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
 };
 
 }  // namespace smcbip::engines
