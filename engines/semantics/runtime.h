@@ -84,11 +84,16 @@ struct ModelError {
   std::string message;
 };
 
+struct ParallelFiring;
+
 class Runtime {
  public:
   Runtime(const bipc::ir::System& system, const Layout& layout, const BoundFunctions& functions,
           StringPool& strings, std::ostream& out, RandomStream& random,
           const RuntimeOptions& options);
+  ~Runtime();
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
 
   /// Initial actions, internal transitions and checks; false with error() set on failure.
   bool initialize();
@@ -124,12 +129,29 @@ class Runtime {
 
  private:
   friend struct RuntimeDetail;
+  /// Where atom code runs: one thread's evaluator (it has a stack) and the error its failures
+  /// record. The atoms of one interaction may fire on several threads at once (multithread
+  /// scheduler); each touches only its own slots of the state.
+  struct AtomScratch {
+    CodeEvaluator& eval;
+    ModelError& error;
+    bool fail(int code, std::string message) {
+      error = {code, std::move(message)};
+      return false;
+    }
+  };
+  AtomScratch main_scratch() { return {eval_, error_}; }
   Frame atom_frame(Index atom);
-  bool update_atom(Index atom);
-  bool run_internal_transitions(Index atom);
-  bool fire_transition(Index atom, Index transition, Index port_label);
-  bool check_invariants(Index atom);
-  bool check_atom_priority_cycle(Index atom);
+  bool update_atom(Index atom) { return update_atom(main_scratch(), atom); }
+  bool update_atom(AtomScratch s, Index atom);
+  bool run_internal_transitions(Index atom) {
+    return run_internal_transitions(main_scratch(), atom);
+  }
+  bool run_internal_transitions(AtomScratch s, Index atom);
+  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label);
+  bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
+  bool check_invariants(AtomScratch s, Index atom);
+  bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
@@ -143,7 +165,13 @@ class Runtime {
   void add_defined(Index connector, std::vector<RuleNode>& out) const;
   void restrict_by(Constraint& c, const Constraint& dominator) const;
   bool execute_value(Index value);
-  bool fire_port(Index atom, Index port);
+  /// The connector's `down` of an interaction value, and its data written back to the state.
+  void run_down(Index value);
+  /// execute_value, with the atoms fired on the thread pool when that is observably the same
+  /// (runtime_parallel.cpp).
+  bool execute_value_in_parallel(Index value);
+  bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
+  bool fire_port(AtomScratch s, Index atom, Index port);
   bool fail(int code, std::string message);
 
   const bipc::ir::System& system_;
@@ -164,6 +192,8 @@ class Runtime {
   std::vector<std::uint8_t> connector_done_;
   std::vector<InteractionValue> values_;
   std::vector<Item> items_;
+  // Multithread scheduler only (threads > 1): the pool and per-thread evaluators.
+  std::unique_ptr<ParallelFiring> parallel_;
 };
 
 }  // namespace smcbip::engines

@@ -1,0 +1,54 @@
+// What the multithread scheduler adds to a Runtime: which atom types may fire in parallel, the
+// thread pool, and one evaluator per thread.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/externs.h"
+#include "engines/interpreter/code_eval.h"
+#include "engines/parallel/fork_join_pool.h"
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+/// Per atom type, whether its atoms can fire on a thread of their own with the same observable
+/// result as in sequence: the code of its transitions (guards, actions, resume guards), of its
+/// invariants and of its priority guards calls no function that is not declared pure (see
+/// Externs::declare_pure) and touches no slot outside its atom. Output, random numbers and
+/// sleeping are side effects whose order the reference engine fixes.
+std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& system,
+                                                   const BoundFunctions& functions);
+
+/// The evaluator of one pool thread, with the call context its extern calls see.
+struct ThreadEvaluator {
+  ThreadEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
+                  const CallContext& main)
+      : call(main), eval(system, functions, call) {}
+  CallContext call;
+  CodeEvaluator eval;
+};
+
+/// The state of the multithread scheduler inside a Runtime.
+struct ParallelFiring {
+  ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
+                 const CallContext& main, unsigned threads);
+
+  parallel::ForkJoinPool pool;
+  std::vector<std::unique_ptr<ThreadEvaluator>> evaluators;  // pool thread t uses [t - 1]
+  std::vector<std::uint8_t> safe_type;                       // parallel_safe_atom_types
+  // The interaction being executed: its atom ports in reference order, and per port whether it
+  // fired without error (else its error).
+  std::vector<std::pair<bipc::ir::Index, bipc::ir::Index>> ports;
+  std::vector<std::uint8_t> fired;
+  std::vector<ModelError> errors;
+  // Per atom, the last execution that listed it (to find an atom listed twice).
+  std::vector<std::uint64_t> seen;
+  std::uint64_t execution = 0;
+};
+
+}  // namespace smcbip::engines
