@@ -24,13 +24,16 @@ namespace smcbip::engines {
 std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& system,
                                                    const BoundFunctions& functions);
 
-/// The evaluator of one pool thread, with the call context its extern calls see.
-struct ThreadEvaluator {
+/// The evaluator of one pool thread, with the call context its extern calls see and the copy
+/// of the data of the atom it fires. Cache-line aligned: the evaluator writes its stack's end
+/// at every instruction, which must not share a line with another thread's.
+struct alignas(64) ThreadEvaluator {
   ThreadEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
                   const CallContext& main)
       : call(main), eval(system, functions, call) {}
   CallContext call;
   CodeEvaluator eval;
+  std::vector<Val> data;
 };
 
 /// The state of the multithread scheduler inside a Runtime.
@@ -39,7 +42,7 @@ struct ParallelFiring {
                  const CallContext& main, unsigned threads);
 
   parallel::ForkJoinPool pool;
-  std::vector<std::unique_ptr<ThreadEvaluator>> evaluators;  // pool thread t uses [t - 1]
+  std::vector<std::unique_ptr<ThreadEvaluator>> evaluators;  // one per pool thread
   std::vector<std::uint8_t> safe_type;                       // parallel_safe_atom_types
   // The interaction being executed: its atom ports in reference order, and per port whether it
   // fired without error (else its error).

@@ -111,6 +111,12 @@ bool Runtime::fail(int code, std::string message) {
   return false;
 }
 
+Frame Runtime::atom_frame(AtomScratch s, Index atom) {
+  Frame f = atom_frame(atom);
+  if (s.atom_data != nullptr) f.atom_data = s.atom_data;
+  return f;
+}
+
 Frame Runtime::atom_frame(Index atom) {
   Frame f;
   f.atom_data = state_.data.data() + layout_.atom_data[atom];
@@ -190,7 +196,7 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
       }
     }
     if (!applies) continue;
-    const Frame f = atom_frame(atom);
+    const Frame f = atom_frame(s, atom);
     bool holds = true;
     if (reads_clock(inv.guard)) {
       const Interval when = s.eval.holds_when(inv.guard, f);
@@ -223,10 +229,10 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
     }
     state_.marking[base + p] = 1;
   }
-  s.eval.execute(t.action, atom_frame(atom));
+  s.eval.execute(t.action, atom_frame(s, atom));
   if (t.resume) {
     state_.resume_pending[atom] = 1;
-    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(atom));
+    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
   }
   return check_invariants(s, atom);
 }
@@ -241,7 +247,7 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
       if (tr.port != kNone) continue;
       bool marked = true;
       for (Index p : tr.from) marked = marked && state_.marking[base + p];
-      if (!marked || !s.eval.holds(tr.guard, atom_frame(atom))) continue;
+      if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
       if (enabled != kNone) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
                            layout_.atom_names[atom] + "!");
@@ -258,7 +264,7 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
-  const Frame f = atom_frame(atom);
+  const Frame f = atom_frame(s, atom);
   for (Index t = 0; t < type.transitions.size(); ++t) {
     const bipc::ir::Transition& tr = type.transitions[t];
     if (tr.port == kNone) continue;
@@ -337,7 +343,7 @@ bool Runtime::check_atom_priority_cycle(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t rules = type.priorities.size();
   const std::size_t n = type.ports.size();
-  const Frame f = atom_frame(atom);
+  const Frame f = atom_frame(s, atom);
   std::vector<bool> active(rules);
   for (std::size_t r = 0; r < rules; ++r) active[r] = s.eval.holds(type.priorities[r].guard, f);
   auto chained = [&](std::size_t r, std::size_t r2) {

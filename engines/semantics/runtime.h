@@ -135,13 +135,17 @@ class Runtime {
   struct AtomScratch {
     CodeEvaluator& eval;
     ModelError& error;
+    /// When set, the data of the one atom being fired: a private copy, so that threads firing
+    /// neighbouring atoms do not write to the same cache lines of the state.
+    Val* atom_data = nullptr;
     bool fail(int code, std::string message) {
       error = {code, std::move(message)};
       return false;
     }
   };
-  AtomScratch main_scratch() { return {eval_, error_}; }
+  AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
   Frame atom_frame(Index atom);
+  Frame atom_frame(AtomScratch s, Index atom);
   bool update_atom(Index atom) { return update_atom(main_scratch(), atom); }
   bool update_atom(AtomScratch s, Index atom);
   bool run_internal_transitions(Index atom) {

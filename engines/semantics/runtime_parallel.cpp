@@ -1,5 +1,6 @@
 // The multithread scheduler's execution of an interaction: connector `down`s in sequence, then
 // the atoms' transitions on the thread pool, with the reference engine's result and error.
+#include <algorithm>
 #include <exception>
 #include <functional>
 #include <optional>
@@ -55,7 +56,7 @@ std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& syste
 ParallelFiring::ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
                                const CallContext& main, unsigned threads)
     : pool(threads), safe_type(parallel_safe_atom_types(system, functions)) {
-  for (unsigned t = 1; t < pool.size(); ++t) {
+  for (unsigned t = 0; t < pool.size(); ++t) {
     evaluators.push_back(std::make_unique<ThreadEvaluator>(system, functions, main));
   }
   seen.assign(system.atoms.size(), 0);
@@ -115,15 +116,22 @@ bool Runtime::execute_value_in_parallel(Index index) {
   p.fired.assign(count, 0);
   p.errors.resize(count);
   auto fire = [&](std::size_t i, unsigned thread) {
-    AtomScratch s{thread == 0 ? eval_ : p.evaluators[thread - 1]->eval, p.errors[i]};
+    ThreadEvaluator& t = *p.evaluators[thread];
+    const auto [atom, port] = p.ports[i];
+    const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
+    t.data.assign(first, first + static_cast<std::ptrdiff_t>(
+                                     system_.atom_types[system_.atoms[atom].type].data.size()));
+    AtomScratch s{t.eval, p.errors[i], t.data.data()};
     try {
-      p.fired[i] = fire_port(s, p.ports[i].first, p.ports[i].second) ? 1 : 0;
+      p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
       s.fail(kInternalError, f.message);
     } catch (...) {
       // A user extern declared pure threw: no error channel on a worker thread.
       std::terminate();
     }
+    // Also after a failure: the reference engine leaves the writes made before it.
+    std::copy(t.data.begin(), t.data.end(), first);
   };
   p.pool.run(count, fire);
   for (std::size_t i = 0; i < count; ++i) {
