@@ -44,15 +44,21 @@ run_seconds() {
   awk -v s="$start" -v e="$end" 'BEGIN { printf "%.6f\n", e - s }'
 }
 
-# Steps per run such that the reference engine takes about target_seconds beyond start-up: runs
-# of 1 and 201 steps give the start-up time and the time per step; at least 200 steps, at most
-# 10 million.
+# Steps per run such that the reference engine takes about target_seconds beyond start-up: the
+# start-up is a run of 1 step; probes of 4 times more steps until one takes a tenth of the
+# target; then scaled. At least 100 steps, at most 50 million.
 choose_limit() {
-  local model=$1 root=$2 start_up probe
+  local model=$1 root=$2 start_up probe=100 seconds
   start_up=$(run_seconds "$model" "$root" 1) || return 1
-  probe=$(run_seconds "$model" "$root" 201) || return 1
-  awk -v a="$start_up" -v b="$probe" -v t="$target_seconds" 'BEGIN {
-    s = b - a; k = (s > 0 ? 200 * t / s : 1e7); if (k < 200) k = 200; if (k > 1e7) k = 1e7
+  for (( ; ; probe *= 4)); do
+    seconds=$(run_seconds "$model" "$root" "$probe") || return 1
+    if awk -v s="$seconds" -v a="$start_up" -v t="$target_seconds" -v p="$probe" \
+      'BEGIN { exit !(s - a >= t / 10 || p >= 5e7) }'; then
+      break
+    fi
+  done
+  awk -v s="$seconds" -v a="$start_up" -v p="$probe" -v t="$target_seconds" 'BEGIN {
+    d = s - a; k = (d > 0 ? p * t / d : p); if (k < 100) k = 100; if (k > 5e7) k = 5e7
     printf "%d\n", k }'
 }
 
@@ -79,7 +85,11 @@ printf '%-10s %6s %9s %13s %13s %13s %8s %8s\n' family atoms steps 'ref steps/s'
 declare -A figures
 measure() {
   local family=$1 n=$2 model=$3 limit ref opt mt
-  limit=$(choose_limit "$model" 'Top()') || return 1
+  if ! limit=$(choose_limit "$model" 'Top()' 2>"$models_dir/measure.err"); then
+    printf '%-10s %6d  not run: %s\n' "$family" "$n" \
+      "$(grep -m1 'error' "$models_dir/measure.err" || echo 'smcbip failed')"
+    return 0
+  fi
   ref=$(steps_per_second "$model" 'Top()' "$limit" --engine reference) || return 1
   opt=$(steps_per_second "$model" 'Top()' "$limit" --engine optimised) || return 1
   mt=$(steps_per_second "$model" 'Top()' "$limit" --engine multithread --threads "$threads") ||
@@ -107,9 +117,9 @@ printf '%-10s %6s %9d %13d\n' channel 3 "$channel_limit" "$channel"
 
 echo
 echo "targets (reported, not enforced):"
-read -r ref opt _ <<<"${figures[rendezvous 1000]}"
+read -r ref opt _ <<<"${figures[rendezvous 1000]:-0 0 0}"
 echo "  optimised >= 10x reference on rendezvous, 1000 atoms: $(ratio "$opt" "$ref")x"
-read -r _ opt mt <<<"${figures[work 100]}"
+read -r _ opt mt <<<"${figures[work 100]:-0 0 0}"
 echo "  multithread >= 1.5x optimised on work, 100 atoms ($work assignments per transition," \
   "$threads threads): $(ratio "$mt" "$opt")x"
 echo "  channel >= 2000000 steps/s: $channel steps/s"

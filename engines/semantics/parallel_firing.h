@@ -24,6 +24,12 @@ namespace smcbip::engines {
 std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& system,
                                                    const BoundFunctions& functions);
 
+/// Per atom type, an estimate of the work of firing one of its atoms: the most instructions of
+/// one transition (guard, action, resume guard). Forking costs about as much as a thousand
+/// instructions, so interactions whose atoms' estimates sum to less than
+/// RuntimeOptions::parallel_min_work run inline.
+std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system);
+
 /// The evaluator of one pool thread, with the call context its extern calls see and the copy
 /// of the data of the atom it fires. Cache-line aligned: the evaluator writes its stack's end
 /// at every instruction, which must not share a line with another thread's.
@@ -44,6 +50,7 @@ struct ParallelFiring {
   parallel::ForkJoinPool pool;
   std::vector<std::unique_ptr<ThreadEvaluator>> evaluators;  // one per pool thread
   std::vector<std::uint8_t> safe_type;                       // parallel_safe_atom_types
+  std::vector<std::size_t> cost;                             // atom_type_firing_costs
   // The interaction being executed: its atom ports in reference order, and per port whether it
   // fired without error (else its error).
   std::vector<std::pair<bipc::ir::Index, bipc::ir::Index>> ports;

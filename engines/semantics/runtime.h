@@ -3,6 +3,7 @@
 // schedulers (reference, optimised, multithread) drive it; the semantics lives here once.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -76,6 +77,9 @@ struct RuntimeOptions {
   bool incremental = false;
   /// Multithread scheduler: the atoms of one interaction execute on this many threads.
   unsigned threads = 1;
+  /// Multithread scheduler: the least estimated work of an interaction's atoms, in
+  /// instructions, for which they fire in parallel (0: always; tests use it).
+  std::size_t parallel_min_work = 1000;
 };
 
 /// A run-time error of the model, with the reference engine's code and message.

@@ -53,9 +53,24 @@ std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& syste
   return safe;
 }
 
+std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system) {
+  std::vector<std::size_t> costs;
+  for (const bipc::ir::AtomType& type : system.atom_types) {
+    std::size_t most = 0;
+    for (const bipc::ir::Transition& t : type.transitions) {
+      const std::size_t resume = t.resume ? t.resume->guard.instrs.size() : 0;
+      most = std::max(most, t.guard.instrs.size() + t.action.instrs.size() + resume);
+    }
+    costs.push_back(most);
+  }
+  return costs;
+}
+
 ParallelFiring::ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
                                const CallContext& main, unsigned threads)
-    : pool(threads), safe_type(parallel_safe_atom_types(system, functions)) {
+    : pool(threads),
+      safe_type(parallel_safe_atom_types(system, functions)),
+      cost(atom_type_firing_costs(system)) {
   for (unsigned t = 0; t < pool.size(); ++t) {
     evaluators.push_back(std::make_unique<ThreadEvaluator>(system, functions, main));
   }
@@ -77,16 +92,20 @@ bool Runtime::execute_value_in_parallel(Index index) {
     }
   };
   walk(index);
-  // Parallel firing must pay off and must not be observable: two atoms at least, each of a
-  // parallel-safe type, none listed twice (its second firing would see the first).
+  // Parallel firing must pay off and must not be observable: two atoms at least with enough
+  // work between them, each of a parallel-safe type, none listed twice (its second firing
+  // would see the first).
   bool parallel = p.ports.size() >= 2;
+  std::size_t work = 0;
   ++p.execution;
   for (const auto& [atom, port] : p.ports) {
     if (!parallel) break;
-    parallel = p.safe_type[system_.atoms[atom].type] && p.seen[atom] != p.execution;
+    const Index type = system_.atoms[atom].type;
+    parallel = p.safe_type[type] && p.seen[atom] != p.execution;
     p.seen[atom] = p.execution;
+    work += p.cost[type];
   }
-  if (!parallel) return execute_value(index);
+  if (!parallel || work < options_.parallel_min_work) return execute_value(index);
 
   // The downs first, in the reference order. A down only writes its own connector's data and
   // the port data of atoms below it, which the atoms fired before it in the reference order

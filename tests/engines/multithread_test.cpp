@@ -113,6 +113,7 @@ struct Instance {
     engines::bind_functions(system, externs, strings, functions);
     engines::RuntimeOptions options;
     options.threads = threads;
+    options.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
     runtime = std::make_unique<engines::Runtime>(system, layout, functions, strings, out, random,
                                                  options);
   }
@@ -177,6 +178,7 @@ std::string trace(const bipc::ir::System& system, engines::EngineKind engine, un
   engines::SimulateOptions options;
   options.engine = engine;
   options.threads = threads;
+  options.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
   options.seed = seed;
   options.limit = 150;
   std::ostringstream out;
