@@ -7,7 +7,7 @@ FUZZ_SECONDS ?= 600
 ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc tests bench
 
-.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench format clean
+.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines format clean
 
 all: build
 
@@ -52,6 +52,10 @@ fuzz: fuzz-build
 
 bench: build
 	bench/frontend_scaling.sh $(BUILD_DIR)
+
+# Steps per second of the three schedulers (reports, never fails on timings).
+bench-engines: build
+	bench/engines_steps.sh $(BUILD_DIR)
 
 format:
 	find $(FORMAT_DIRS) \( -name '*.cpp' -o -name '*.h' \) -print0 2>/dev/null \

@@ -2,6 +2,7 @@
 // scheduler, untimed, in simulated or real time, or stochastically, and report the run.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <istream>
 #include <memory>
@@ -38,6 +39,7 @@ enum RunCode : int {
 struct SimulateOptions {
   EngineKind engine = EngineKind::Reference;
   unsigned threads = 0;  // multithread engine; 0: all cores
+  std::size_t parallel_min_work = 1000;  // multithread engine: see RuntimeOptions
   std::optional<std::uint64_t> seed;  // none: drawn from the platform's entropy
   std::uint64_t run_index = 0;        // with the seed, selects the run's random stream
   std::optional<std::uint64_t> limit;  // stop after this many steps

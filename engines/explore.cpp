@@ -3,7 +3,9 @@
 
 #include <boost/container_hash/hash.hpp>
 #include <deque>
+#include <limits>
 #include <unordered_set>
+#include <utility>
 
 #include "engines/trace/text_trace.h"
 
@@ -11,31 +13,23 @@ namespace smcbip::engines {
 
 namespace {
 
-/// The part of a run state that identifies it: markings and data, as raw bytes.
-std::string state_key(const RunState& state) {
-  std::string key(reinterpret_cast<const char*>(state.marking.data()), state.marking.size());
-  key.append(reinterpret_cast<const char*>(state.data.data()), state.data.size() * sizeof(Val));
-  key.append(reinterpret_cast<const char*>(state.resume_pending.data()),
-             state.resume_pending.size());
-  return key;
-}
-
 std::string plural(std::uint64_t n, const char* what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
-}  // namespace
-
-ExplorationCounts explore_states(Runtime& runtime) {
+/// Breadth-first search to depth `max_steps`; `seen` receives the keys of the states found.
+ExplorationCounts breadth_first(Runtime& runtime, std::uint64_t max_steps,
+                                std::unordered_set<std::string>& seen) {
   ExplorationCounts counts;
-  std::unordered_set<std::string> seen;
-  std::deque<RunState> frontier;
+  std::deque<std::pair<RunState, std::uint64_t>> frontier;  // with its depth
   seen.insert(state_key(runtime.state()));
-  frontier.push_back(runtime.state());
+  frontier.emplace_back(runtime.state(), 0);
   while (!frontier.empty()) {
-    const RunState state = std::move(frontier.front());
+    const RunState state = std::move(frontier.front().first);
+    const std::uint64_t depth = frontier.front().second;
     frontier.pop_front();
     ++counts.states;
+    if (depth == max_steps) continue;
     if (!runtime.restore(state) || !runtime.compute_items()) {
       ++counts.errors;
       ++counts.error_states;
@@ -60,11 +54,32 @@ ExplorationCounts explore_states(Runtime& runtime) {
       }
       RunState next = runtime.state();
       next.now = state.now;
-      if (seen.insert(state_key(next)).second) frontier.push_back(std::move(next));
+      if (seen.insert(state_key(next)).second) frontier.emplace_back(std::move(next), depth + 1);
     }
     if (failed) ++counts.error_states;
   }
   return counts;
+}
+
+}  // namespace
+
+std::string state_key(const RunState& state) {
+  std::string key(reinterpret_cast<const char*>(state.marking.data()), state.marking.size());
+  key.append(reinterpret_cast<const char*>(state.data.data()), state.data.size() * sizeof(Val));
+  key.append(reinterpret_cast<const char*>(state.resume_pending.data()),
+             state.resume_pending.size());
+  return key;
+}
+
+ExplorationCounts explore_states(Runtime& runtime) {
+  std::unordered_set<std::string> seen;
+  return breadth_first(runtime, std::numeric_limits<std::uint64_t>::max(), seen);
+}
+
+std::unordered_set<std::string> reachable_state_keys(Runtime& runtime, std::uint64_t max_steps) {
+  std::unordered_set<std::string> seen;
+  breadth_first(runtime, max_steps, seen);
+  return seen;
 }
 
 void write_exploration(std::ostream& out, const ExplorationCounts& counts) {

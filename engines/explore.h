@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <ostream>
+#include <string>
+#include <unordered_set>
 
 #include "engines/semantics/runtime.h"
 
@@ -16,6 +18,16 @@ struct ExplorationCounts {
 /// is executed once. A state is the marking and data of all atoms (time is ignored). Errors of
 /// executing an item are counted, not reported one by one.
 ExplorationCounts explore_states(Runtime& runtime);
+
+/// The part of a run state that identifies it in an exploration: markings, data and pending
+/// resumes, as raw bytes (time is ignored).
+std::string state_key(const RunState& state);
+
+/// The keys of the states reachable from the runtime's current state in at most `max_steps`
+/// steps, found breadth first as explore_states finds them (executions that fail add nothing).
+/// Lets tests check that another scheduler only visits reachable states, also on models whose
+/// state space is too large to enumerate whole.
+std::unordered_set<std::string> reachable_state_keys(Runtime& runtime, std::uint64_t max_steps);
 
 /// The reference engine's summary line.
 void write_exploration(std::ostream& out, const ExplorationCounts& counts);

@@ -84,12 +84,18 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
 
 void Externs::add_raw(std::string name, std::vector<ValueKind> params, ValueKind result,
                       ExternFn fn) {
-  functions_.push_back({std::move(name), std::move(params), result, std::move(fn), false});
+  functions_.push_back({std::move(name), std::move(params), result, std::move(fn), false, false});
 }
 
 void Externs::add_variadic(std::string name, std::vector<ValueKind> params, ValueKind result,
                            ExternFn fn) {
-  functions_.push_back({std::move(name), std::move(params), result, std::move(fn), true});
+  functions_.push_back({std::move(name), std::move(params), result, std::move(fn), true, false});
+}
+
+void Externs::declare_pure(const std::string& name) {
+  for (Function& f : functions_) {
+    if (f.name == name) f.pure = true;
+  }
 }
 
 void Externs::add_port_class(std::string class_name, ExternPortFactory factory) {
@@ -145,6 +151,7 @@ Externs Externs::with_builtins() {
   externs.add("min", [](double a, double b) { return std::min(a, b); });
   externs.add("max", [](double a, double b) { return std::max(a, b); });
   externs.add("abs", [](std::int64_t a) { return a < 0 ? -a : a; });
+  for (const char* name : {"min", "max", "abs"}) externs.declare_pure(name);
   externs.add("rand", [](CallContext& context) -> std::int64_t {
     // RAND_MAX bounds the values as C's rand does; the run's stream keeps them reproducible.
     if (context.random == nullptr) return 0;

@@ -118,6 +118,12 @@ class Externs {
     add(std::move(name), std::function(fn));
   }
 
+  /// Declares every function registered so far under `name` pure: its result depends on its
+  /// arguments only, it has no side effect (no output, no use of the CallContext's stream or
+  /// random numbers) and it may run on several threads at once. The multithread scheduler fires
+  /// atoms in parallel only when their code calls pure functions alone.
+  void declare_pure(const std::string& name);
+
   void add_port_class(std::string class_name, ExternPortFactory factory);
 
   struct Function {
@@ -126,6 +132,7 @@ class Externs {
     ValueKind result = ValueKind::Void;
     ExternFn fn;
     bool variadic = false;
+    bool pure = false;  // see declare_pure
   };
   /// The function for a call with these argument kinds, or nullptr.
   const Function* find(const std::string& name, const std::vector<ValueKind>& params) const;

@@ -40,6 +40,7 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
   r.incremental = options.engine != EngineKind::Reference;
   if (options.engine == EngineKind::Multithread) {
     r.threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    r.parallel_min_work = options.parallel_min_work;
   }
   return r;
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "engines/engines.h"
+#include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
 
@@ -101,11 +102,20 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
   atom_invariant_.assign(system.atoms.size(), Interval::all());
+  if (options.threads > 1) {
+    parallel_ = std::make_unique<ParallelFiring>(system, functions, call_, options.threads);
+  }
 }
 
 bool Runtime::fail(int code, std::string message) {
   error_ = {code, std::move(message)};
   return false;
+}
+
+Frame Runtime::atom_frame(AtomScratch s, Index atom) {
+  Frame f = atom_frame(atom);
+  if (s.atom_data != nullptr) f.atom_data = s.atom_data;
+  return f;
 }
 
 Frame Runtime::atom_frame(Index atom) {
@@ -171,7 +181,7 @@ bool Runtime::initialize() {
   return check_compound_priority_cycles();
 }
 
-bool Runtime::check_invariants(Index atom) {
+bool Runtime::check_invariants(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
@@ -188,17 +198,17 @@ bool Runtime::check_invariants(Index atom) {
       }
     }
     if (!applies) continue;
-    const Frame f = atom_frame(atom);
+    const Frame f = atom_frame(s, atom);
     bool holds = true;
     if (reads_clock(inv.guard)) {
-      const Interval when = eval_.holds_when(inv.guard, f);
+      const Interval when = s.eval.holds_when(inv.guard, f);
       atom_invariant_[atom] = atom_invariant_[atom].intersect(when);
       holds = when.contains(state_.now);
     } else {
-      holds = eval_.holds(inv.guard, f);
+      holds = s.eval.holds(inv.guard, f);
     }
     if (!holds) {
-      return fail(5, "the invariant " + inv.name + " of component " +
+      return s.fail(5, "the invariant " + inv.name + " of component " +
                          bipc::ir::last_component(system_.atoms[atom].path) +
                          " has been violated!");
     }
@@ -206,7 +216,7 @@ bool Runtime::check_invariants(Index atom) {
   return true;
 }
 
-bool Runtime::fire_transition(Index atom, Index transition, Index label) {
+bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
@@ -214,22 +224,22 @@ bool Runtime::fire_transition(Index atom, Index transition, Index label) {
   for (Index p : t.to) {
     if (state_.marking[base + p]) {
       const bool labelled = label != kNone && !type.ports[label].is_extern;
-      return fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
+      return s.fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
                          (labelled ? "executing a transition labelled by " + type.ports[label].name
                                    : std::string("executing an internal transition")) +
                          ")");
     }
     state_.marking[base + p] = 1;
   }
-  eval_.execute(t.action, atom_frame(atom));
+  s.eval.execute(t.action, atom_frame(s, atom));
   if (t.resume) {
     state_.resume_pending[atom] = 1;
-    state_.resume_interval[atom] = eval_.holds_when(t.resume->guard, atom_frame(atom));
+    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
   }
-  return check_invariants(atom);
+  return check_invariants(s, atom);
 }
 
-bool Runtime::run_internal_transitions(Index atom) {
+bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   for (;;) {
@@ -239,49 +249,49 @@ bool Runtime::run_internal_transitions(Index atom) {
       if (tr.port != kNone) continue;
       bool marked = true;
       for (Index p : tr.from) marked = marked && state_.marking[base + p];
-      if (!marked || !eval_.holds(tr.guard, atom_frame(atom))) continue;
+      if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
       if (enabled != kNone) {
-        return fail(1, "non-deterministic choice between internal transitions in " +
+        return s.fail(1, "non-deterministic choice between internal transitions in " +
                            layout_.atom_names[atom] + "!");
       }
       enabled = t;
     }
     if (enabled == kNone) return true;
-    if (!fire_transition(atom, enabled, kNone)) return false;
+    if (!fire_transition(s, atom, enabled, kNone)) return false;
   }
 }
 
-bool Runtime::update_atom(Index atom) {
+bool Runtime::update_atom(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
-  const Frame f = atom_frame(atom);
+  const Frame f = atom_frame(s, atom);
   for (Index t = 0; t < type.transitions.size(); ++t) {
     const bipc::ir::Transition& tr = type.transitions[t];
     if (tr.port == kNone) continue;
     bool marked = true;
     for (Index p : tr.from) marked = marked && state_.marking[base + p];
     if (!marked) continue;
-    const Interval when = eval_.holds_when(tr.guard, f);
+    const Interval when = s.eval.holds_when(tr.guard, f);
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
-        return fail(1, "non-deterministic choice between internal transitions in " +
+        return s.fail(1, "non-deterministic choice between internal transitions in " +
                            layout_.atom_names[atom] + "!");
       }
-      return fail(1, "non-deterministic choice between transitions labelled by " +
+      return s.fail(1, "non-deterministic choice between transitions labelled by " +
                          type.ports[tr.port].name + " in " + layout_.atom_names[atom] + "!");
     }
     values[tr.port] = AtomPortValue{t, {when, tr.urgency}};
   }
   if (type.priorities.empty()) return true;
-  if (!check_atom_priority_cycle(atom)) return false;
+  if (!check_atom_priority_cycle(s, atom)) return false;
   // A port is disabled when a chain of active rules from it ends at an enabled port.
   const std::size_t n = type.ports.size();
   const std::size_t rules = type.priorities.size();
   std::vector<bool> active(rules);
-  for (std::size_t r = 0; r < rules; ++r) active[r] = eval_.holds(type.priorities[r].guard, f);
+  for (std::size_t r = 0; r < rules; ++r) active[r] = s.eval.holds(type.priorities[r].guard, f);
   auto in_low = [&](std::size_t r, std::size_t p) {
     const auto& rule = type.priorities[r];
     return rule.low == kNone ? rule.high != p : rule.low == p;
@@ -331,13 +341,13 @@ bool Runtime::update_atom(Index atom) {
   return true;
 }
 
-bool Runtime::check_atom_priority_cycle(Index atom) {
+bool Runtime::check_atom_priority_cycle(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t rules = type.priorities.size();
   const std::size_t n = type.ports.size();
-  const Frame f = atom_frame(atom);
+  const Frame f = atom_frame(s, atom);
   std::vector<bool> active(rules);
-  for (std::size_t r = 0; r < rules; ++r) active[r] = eval_.holds(type.priorities[r].guard, f);
+  for (std::size_t r = 0; r < rules; ++r) active[r] = s.eval.holds(type.priorities[r].guard, f);
   auto chained = [&](std::size_t r, std::size_t r2) {
     const auto& a = type.priorities[r];
     const auto& b = type.priorities[r2];
@@ -360,7 +370,7 @@ bool Runtime::check_atom_priority_cycle(Index atom) {
     return false;
   };
   for (std::size_t r = 0; r < rules; ++r) {
-    if (active[r] && colour[r] == 0 && cyclic(r)) return fail(4, "cycle in priorities! ()");
+    if (active[r] && colour[r] == 0 && cyclic(r)) return s.fail(4, "cycle in priorities! ()");
   }
   return true;
 }
@@ -723,7 +733,7 @@ Interval Runtime::time_bound() const {
 // ---------------------------------------------------------------------------------------------
 // Execution.
 
-bool Runtime::execute_value(Index index) {
+void Runtime::run_down(Index index) {
   InteractionValue& value = values_[index];
   const auto& type = system_.connector_types[system_.connectors[value.connector].type];
   const int code = layout_.defined[value.connector][value.defined].code;
@@ -739,19 +749,25 @@ bool Runtime::execute_value(Index index) {
   std::copy(
       value.data.begin(), value.data.end(),
       state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[value.connector]));
+}
+
+bool Runtime::execute_value(Index index) {
+  run_down(index);
   // Ports run in the interaction's port order, depth first: a sub-connector's down comes after
   // the atoms of earlier ports have executed (reference engine order).
-  for (const PortValue& pv : value.choice) {
+  for (const PortValue& pv : values_[index].choice) {
     if (pv.from_atom ? !fire_port(pv.atom, pv.port) : !execute_value(pv.sub)) return false;
   }
   return true;
 }
 
-bool Runtime::fire_port(Index atom, Index port) {
+bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
   const auto& v = port_values_[port_offset_[atom] + port];
   if (!v) return true;
-  if (!fire_transition(atom, v->transition, port) || !run_internal_transitions(atom)) return false;
-  return state_.resume_pending[atom] || update_atom(atom);
+  if (!fire_transition(s, atom, v->transition, port) || !run_internal_transitions(s, atom)) {
+    return false;
+  }
+  return state_.resume_pending[atom] || update_atom(s, atom);
 }
 
 std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const {
@@ -788,7 +804,9 @@ bool Runtime::restore(const RunState& state) {
 bool Runtime::execute(const Item& item, TimeValue at) {
   state_.now = at;
   try {
-    if (item.kind == Item::Kind::Interaction) return execute_value(item.value);
+    if (item.kind == Item::Kind::Interaction) {
+      return parallel_ ? execute_value_in_parallel(item.value) : execute_value(item.value);
+    }
     if (item.kind == Item::Kind::External) return fire_extern(item);
     return fire_port(item.atom, item.port);
   } catch (const CodeFault& fault) {

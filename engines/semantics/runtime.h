@@ -3,6 +3,7 @@
 // schedulers (reference, optimised, multithread) drive it; the semantics lives here once.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -88,6 +89,9 @@ struct RuntimeOptions {
   bool incremental = false;
   /// Multithread scheduler: the atoms of one interaction execute on this many threads.
   unsigned threads = 1;
+  /// Multithread scheduler: the least estimated work of an interaction's atoms, in
+  /// instructions, for which they fire in parallel (0: always; tests use it).
+  std::size_t parallel_min_work = 1000;
 };
 
 /// A run-time error of the model, with the reference engine's code and message.
@@ -96,11 +100,16 @@ struct ModelError {
   std::string message;
 };
 
+struct ParallelFiring;
+
 class Runtime {
  public:
   Runtime(const bipc::ir::System& system, const Layout& layout, const BoundFunctions& functions,
           StringPool& strings, std::ostream& out, RandomStream& random,
           const RuntimeOptions& options);
+  ~Runtime();
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
 
   /// Initial actions, internal transitions and checks; false with error() set on failure.
   bool initialize();
@@ -147,12 +156,33 @@ class Runtime {
 
  private:
   friend struct RuntimeDetail;
+  /// Where atom code runs: one thread's evaluator (it has a stack) and the error its failures
+  /// record. The atoms of one interaction may fire on several threads at once (multithread
+  /// scheduler); each touches only its own slots of the state.
+  struct AtomScratch {
+    CodeEvaluator& eval;
+    ModelError& error;
+    /// When set, the data of the one atom being fired: a private copy, so that threads firing
+    /// neighbouring atoms do not write to the same cache lines of the state.
+    Val* atom_data = nullptr;
+    bool fail(int code, std::string message) {
+      error = {code, std::move(message)};
+      return false;
+    }
+  };
+  AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
   Frame atom_frame(Index atom);
-  bool update_atom(Index atom);
-  bool run_internal_transitions(Index atom);
-  bool fire_transition(Index atom, Index transition, Index port_label);
-  bool check_invariants(Index atom);
-  bool check_atom_priority_cycle(Index atom);
+  Frame atom_frame(AtomScratch s, Index atom);
+  bool update_atom(Index atom) { return update_atom(main_scratch(), atom); }
+  bool update_atom(AtomScratch s, Index atom);
+  bool run_internal_transitions(Index atom) {
+    return run_internal_transitions(main_scratch(), atom);
+  }
+  bool run_internal_transitions(AtomScratch s, Index atom);
+  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label);
+  bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
+  bool check_invariants(AtomScratch s, Index atom);
+  bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
@@ -169,7 +199,13 @@ class Runtime {
   /// beyond it whatever is chosen.
   Interval time_bound() const;
   bool execute_value(Index value);
-  bool fire_port(Index atom, Index port);
+  /// The connector's `down` of an interaction value, and its data written back to the state.
+  void run_down(Index value);
+  /// execute_value, with the atoms fired on the thread pool when that is observably the same
+  /// (runtime_parallel.cpp).
+  bool execute_value_in_parallel(Index value);
+  bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
+  bool fire_port(AtomScratch s, Index atom, Index port);
   bool fail(int code, std::string message);
   bool open_extern_ports();
   void collect_extern_items();
@@ -198,6 +234,8 @@ class Runtime {
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
+  // Multithread scheduler only (threads > 1): the pool and per-thread evaluators.
+  std::unique_ptr<ParallelFiring> parallel_;
 };
 
 }  // namespace smcbip::engines

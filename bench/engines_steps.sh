@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Whole-run simulation speed: steps per second of the reference, optimised and multithread engines.
+#
+# Usage: bench/engines_steps.sh [BUILD_DIR]   (default: build)
+# Runs `smcbip simulate --silent --limit K` on generated rendezvous and broadcast models of 10 to
+# 10,000 atoms, on the work family (100 atoms, WORK assignments per transition) and on
+# models/channel.bip, and prints steps per second from the wall time (process start and model
+# loading included, hence K chosen for runs of about a second), each engine also as a ratio
+# against the reference engine in the same invocation, beside the targets. It reports only:
+# timings on a shared machine are noisy (the load average is printed), so it never fails on them.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+build_dir=${1:-build}
+smcbip="$build_dir/bin/smcbip"
+generator="$build_dir/bin/gen_bip_models"
+models_dir="$build_dir/bench-models"
+sizes=(10 100 1000 10000)
+runs=${RUNS:-3}
+target_seconds=${TARGET_SECONDS:-1.0}
+work=${WORK:-1000}
+threads=${THREADS:-2}
+
+for tool in "$smcbip" "$generator"; do
+  if [[ ! -x "$tool" ]]; then
+    echo "engines_steps: $tool not found; build first (make build)" >&2
+    exit 2
+  fi
+done
+mkdir -p "$models_dir"
+
+# Wall seconds of one silent run of model $1 (root $2) with $3 steps and engine options $4...
+run_seconds() {
+  local model=$1 root=$2 limit=$3 start end
+  shift 3
+  start=$EPOCHREALTIME
+  if ! "$smcbip" simulate "$model" --root "$root" --seed 1 --limit "$limit" --silent "$@" \
+    >/dev/null 2>"$models_dir/last.err"; then
+    echo "engines_steps: smcbip simulate failed on $model $*:" >&2
+    head -n 20 "$models_dir/last.err" >&2
+    return 1
+  fi
+  end=$EPOCHREALTIME
+  awk -v s="$start" -v e="$end" 'BEGIN { printf "%.6f\n", e - s }'
+}
+
+# Steps per run such that the reference engine takes about target_seconds beyond start-up: the
+# start-up is a run of 1 step; probes of 4 times more steps until one takes a tenth of the
+# target; then scaled. At least 100 steps, at most 50 million.
+choose_limit() {
+  local model=$1 root=$2 start_up probe=100 seconds
+  start_up=$(run_seconds "$model" "$root" 1) || return 1
+  for (( ; ; probe *= 4)); do
+    seconds=$(run_seconds "$model" "$root" "$probe") || return 1
+    if awk -v s="$seconds" -v a="$start_up" -v t="$target_seconds" -v p="$probe" \
+      'BEGIN { exit !(s - a >= t / 10 || p >= 5e7) }'; then
+      break
+    fi
+  done
+  awk -v s="$seconds" -v a="$start_up" -v p="$probe" -v t="$target_seconds" 'BEGIN {
+    d = s - a; k = (d > 0 ? p * t / d : p); if (k < 100) k = 100; if (k > 5e7) k = 5e7
+    printf "%d\n", k }'
+}
+
+# Best steps per second over `runs` runs.
+steps_per_second() {
+  local model=$1 root=$2 limit=$3 best="" seconds r
+  shift 3
+  for ((r = 0; r < runs; r++)); do
+    seconds=$(run_seconds "$model" "$root" "$limit" "$@") || return 1
+    if [[ -z "$best" ]] || awk -v a="$seconds" -v b="$best" 'BEGIN { exit !(a < b) }'; then
+      best=$seconds
+    fi
+  done
+  awk -v k="$limit" -v s="$best" 'BEGIN { printf "%.0f\n", (s > 0 ? k / s : 0) }'
+}
+
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }
+
+echo "engines_steps: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg);" \
+  "multithread on $threads threads; best of $runs runs"
+printf '%-10s %6s %9s %13s %13s %13s %8s %8s\n' family atoms steps 'ref steps/s' \
+  'opt steps/s' 'mt steps/s' 'opt/ref' 'mt/ref'
+# family atoms -> "ref opt mt" steps per second, for the targets below.
+declare -A figures
+measure() {
+  local family=$1 n=$2 model=$3 limit ref opt mt
+  if ! limit=$(choose_limit "$model" 'Top()' 2>"$models_dir/measure.err"); then
+    printf '%-10s %6d  not run: %s\n' "$family" "$n" \
+      "$(grep -m1 'error' "$models_dir/measure.err" || echo 'smcbip failed')"
+    return 0
+  fi
+  ref=$(steps_per_second "$model" 'Top()' "$limit" --engine reference) || return 1
+  opt=$(steps_per_second "$model" 'Top()' "$limit" --engine optimised) || return 1
+  mt=$(steps_per_second "$model" 'Top()' "$limit" --engine multithread --threads "$threads") ||
+    return 1
+  figures["$family $n"]="$ref $opt $mt"
+  printf '%-10s %6d %9d %13d %13d %13d %8s %8s\n' "$family" "$n" "$limit" "$ref" "$opt" "$mt" \
+    "$(ratio "$opt" "$ref")" "$(ratio "$mt" "$ref")"
+}
+
+for family in rendezvous broadcast; do
+  for n in "${sizes[@]}"; do
+    model="$models_dir/${family}_$n.bip"
+    "$generator" --family "$family" --atoms "$n" -o "$model"
+    measure "$family" "$n" "$model"
+  done
+done
+model="$models_dir/work_100.bip"
+"$generator" --family work --atoms 100 --work "$work" -o "$model"
+measure work 100 "$model"
+
+# The stochastic Channel model, with the default options of `smcbip simulate`.
+channel_limit=$(choose_limit models/channel.bip 'System()')
+channel=$(steps_per_second models/channel.bip 'System()' "$channel_limit")
+printf '%-10s %6s %9d %13d\n' channel 3 "$channel_limit" "$channel"
+
+echo
+echo "targets (reported, not enforced):"
+read -r ref opt _ <<<"${figures[rendezvous 1000]:-0 0 0}"
+echo "  optimised >= 10x reference on rendezvous, 1000 atoms: $(ratio "$opt" "$ref")x"
+read -r _ opt mt <<<"${figures[work 100]:-0 0 0}"
+echo "  multithread >= 1.5x optimised on work, 100 atoms ($work assignments per transition," \
+  "$threads threads): $(ratio "$mt" "$opt")x"
+echo "  channel >= 2000000 steps/s: $channel steps/s"

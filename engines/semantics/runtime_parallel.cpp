@@ -1,0 +1,166 @@
+// The multithread scheduler's execution of an interaction: connector `down`s in sequence, then
+// the atoms' transitions on the thread pool, with the reference engine's result and error.
+#include <algorithm>
+#include <exception>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "engines/engines.h"
+#include "engines/semantics/parallel_firing.h"
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+using bipc::ir::Code;
+using bipc::ir::Op;
+using bipc::ir::Scope;
+
+namespace {
+
+bool code_is_parallel_safe(const Code& code, const BoundFunctions& functions) {
+  for (const bipc::ir::Instr& in : code.instrs) {
+    if (in.op == Op::Call) {
+      const Externs::Function* f = functions.functions[in.index];
+      if (f == nullptr || !f->pure) return false;
+    }
+    // Atom code reads and writes its own atom only; anything else would be shared.
+    if ((in.op == Op::Load || in.op == Op::Store) && in.scope != Scope::AtomData &&
+        in.scope != Scope::AtomParam && in.scope != Scope::Clock) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> parallel_safe_atom_types(const bipc::ir::System& system,
+                                                   const BoundFunctions& functions) {
+  std::vector<std::uint8_t> safe;
+  for (const bipc::ir::AtomType& type : system.atom_types) {
+    bool ok = true;
+    auto check = [&](const Code& code) { ok = ok && code_is_parallel_safe(code, functions); };
+    for (const bipc::ir::Transition& t : type.transitions) {
+      check(t.guard);
+      check(t.action);
+      if (t.resume) check(t.resume->guard);
+    }
+    for (const bipc::ir::Invariant& inv : type.invariants) check(inv.guard);
+    for (const bipc::ir::AtomPriority& p : type.priorities) check(p.guard);
+    safe.push_back(ok ? 1 : 0);
+  }
+  return safe;
+}
+
+std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system) {
+  std::vector<std::size_t> costs;
+  for (const bipc::ir::AtomType& type : system.atom_types) {
+    std::size_t most = 0;
+    for (const bipc::ir::Transition& t : type.transitions) {
+      const std::size_t resume = t.resume ? t.resume->guard.instrs.size() : 0;
+      most = std::max(most, t.guard.instrs.size() + t.action.instrs.size() + resume);
+    }
+    costs.push_back(most);
+  }
+  return costs;
+}
+
+ParallelFiring::ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
+                               const CallContext& main, unsigned threads)
+    : pool(threads),
+      safe_type(parallel_safe_atom_types(system, functions)),
+      cost(atom_type_firing_costs(system)) {
+  for (unsigned t = 0; t < pool.size(); ++t) {
+    evaluators.push_back(std::make_unique<ThreadEvaluator>(system, functions, main));
+  }
+  seen.assign(system.atoms.size(), 0);
+}
+
+Runtime::~Runtime() = default;
+
+bool Runtime::execute_value_in_parallel(Index index) {
+  ParallelFiring& p = *parallel_;
+  p.ports.clear();
+  std::function<void(Index)> walk = [&](Index value) {
+    for (const PortValue& pv : values_[value].choice) {
+      if (pv.from_atom) {
+        p.ports.emplace_back(pv.atom, pv.port);
+      } else {
+        walk(pv.sub);
+      }
+    }
+  };
+  walk(index);
+  // Parallel firing must pay off and must not be observable: two atoms at least with enough
+  // work between them, each of a parallel-safe type, none listed twice (its second firing
+  // would see the first).
+  bool parallel = p.ports.size() >= 2;
+  std::size_t work = 0;
+  ++p.execution;
+  for (const auto& [atom, port] : p.ports) {
+    if (!parallel) break;
+    const Index type = system_.atoms[atom].type;
+    parallel = p.safe_type[type] && p.seen[atom] != p.execution;
+    p.seen[atom] = p.execution;
+    work += p.cost[type];
+  }
+  if (!parallel || work < options_.parallel_min_work) return execute_value(index);
+
+  // The downs first, in the reference order. A down only writes its own connector's data and
+  // the port data of atoms below it, which the atoms fired before it in the reference order
+  // never read, so running the downs early changes no value. A down that faults stops the
+  // reference engine after the atoms before it: only those fire, and their errors come first.
+  std::size_t before_fault = p.ports.size();
+  std::optional<std::string> fault;
+  std::size_t atoms_so_far = 0;
+  std::function<void(Index)> downs = [&](Index value) {
+    run_down(value);
+    for (const PortValue& pv : values_[value].choice) {
+      if (pv.from_atom) {
+        ++atoms_so_far;
+      } else {
+        downs(pv.sub);
+      }
+    }
+  };
+  try {
+    downs(index);
+  } catch (const CodeFault& f) {
+    fault = f.message;
+    before_fault = atoms_so_far;
+  }
+
+  const std::size_t count = before_fault;
+  p.fired.assign(count, 0);
+  p.errors.resize(count);
+  auto fire = [&](std::size_t i, unsigned thread) {
+    ThreadEvaluator& t = *p.evaluators[thread];
+    const auto [atom, port] = p.ports[i];
+    const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
+    t.data.assign(first, first + static_cast<std::ptrdiff_t>(
+                                     system_.atom_types[system_.atoms[atom].type].data.size()));
+    AtomScratch s{t.eval, p.errors[i], t.data.data()};
+    try {
+      p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
+    } catch (const CodeFault& f) {
+      s.fail(kInternalError, f.message);
+    } catch (...) {
+      // A user extern declared pure threw: no error channel on a worker thread.
+      std::terminate();
+    }
+    // Also after a failure: the reference engine leaves the writes made before it.
+    std::copy(t.data.begin(), t.data.end(), first);
+  };
+  p.pool.run(count, fire);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!p.fired[i]) {
+      error_ = std::move(p.errors[i]);
+      return false;
+    }
+  }
+  if (fault) return fail(kInternalError, *fault);
+  return true;
+}
+
+}  // namespace smcbip::engines
