@@ -94,7 +94,8 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
       call_{out, strings, &random, {}},
       eval_(system, functions, call_),
       options_(options),
-      maximal_progress_(options.maximal_progress) {
+      maximal_progress_(options.maximal_progress),
+      cache_(system, layout) {
   for (Index a = 0; a < system.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
@@ -121,6 +122,7 @@ Frame Runtime::atom_frame(Index atom) {
 }
 
 bool Runtime::initialize() {
+  cache_.invalidate_all();
   state_ = RunState{};
   state_.data.assign(layout_.data_size, make_int(0));
   state_.marking.assign(layout_.place_count, 0);
@@ -208,6 +210,7 @@ bool Runtime::fire_transition(Index atom, Index transition, Index label) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
+  cache_.touch_atom(atom);
   for (Index p : t.from) state_.marking[base + p] = 0;
   for (Index p : t.to) {
     if (state_.marking[base + p]) {
@@ -253,6 +256,7 @@ bool Runtime::update_atom(Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
+  cache_.touch_atom(atom);
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Frame f = atom_frame(atom);
   for (Index t = 0; t < type.transitions.size(); ++t) {
@@ -519,9 +523,23 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
   return true;
 }
 
+Index Runtime::store_value(InteractionValue&& value) {
+  if (free_values_.empty()) {
+    values_.push_back(std::move(value));
+    return static_cast<Index>(values_.size() - 1);
+  }
+  const Index slot = free_values_.back();
+  free_values_.pop_back();
+  values_[slot] = std::move(value);
+  return slot;
+}
+
 void Runtime::compute_connector(Index k) {
-  if (connector_done_[k]) return;
-  connector_done_[k] = 1;
+  if (!cache_.claim(k)) return;
+  // Connectors binding this one are stale too, so nothing refers to its old values any more.
+  free_values_.insert(free_values_.end(), connector_values_[k].begin(),
+                      connector_values_[k].end());
+  connector_values_[k].clear();
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   const auto& type = system_.connector_types[connector.type];
   const std::size_t n = connector.bound.size();
@@ -584,8 +602,7 @@ void Runtime::compute_connector(Index k) {
         if (!code || eval_.holds(code->guard, f)) {
           if (code) eval_.execute(code->up, f);
           value.after = value.raw;
-          result.push_back(static_cast<Index>(values_.size()));
-          values_.push_back(std::move(value));
+          result.push_back(store_value(std::move(value)));
         }
       }
       // Next combination: the last port varies fastest (first port outermost).
@@ -612,6 +629,7 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
       if (&other == &value) continue;
       if (dominated_locally(value, other) && !dominated_locally(other, value)) {
         restrict_by(value.after, other.raw);
+        cache_.note_time_dependent(k);
       }
     }
   }
@@ -641,24 +659,43 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
   dominate({k, value.ports});
 }
 
+void Runtime::begin_values(bool full) {
+  if (full) {
+    values_.clear();
+    free_values_.clear();
+    connector_values_.assign(system_.connectors.size(), {});
+  }
+  cache_.begin(state_.now, full);
+}
+
+void Runtime::recompute_priorities(Index k) {
+  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
+  cache_.clear_time_dependent(k);
+  for (Index v : connector_values_[k]) apply_priorities(values_[v], k);
+  cache_.priorities_changed(k);
+}
+
+void Runtime::compute_compound(Index c) {
+  // All values of the compound first: priorities compare them with each other.
+  for (Index k : system_.compounds[c].connectors) compute_connector(k);
+  for (Index k : system_.compounds[c].connectors) {
+    if (cache_.needs_priorities(k)) recompute_priorities(k);
+  }
+}
+
 bool Runtime::compute_items() {
-  values_.clear();
   items_.clear();
-  connector_values_.assign(system_.connectors.size(), {});
-  connector_done_.assign(system_.connectors.size(), 0);
   if (!check_compound_priority_cycles()) return false;
+  begin_values(!options_.incremental || cache_.all_stale());
   try {
     // Compounds bottom-up: a compound export of a sub-connector needs its values after
     // priorities. Deeper compounds have larger indices than their parents.
-    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) {
-      for (Index k : system_.compounds[c].connectors) compute_connector(k);
-      for (Index k : system_.compounds[c].connectors) {
-        for (Index v : connector_values_[k]) apply_priorities(values_[v], k);
-      }
-    }
+    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) compute_compound(c);
   } catch (const CodeFault& fault) {
+    cache_.invalidate_all();
     return fail(kInternalError, fault.message);
   }
+  cache_.end();
   // Raw items; their windows are cut to the admissible waiting interval below.
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
@@ -754,6 +791,7 @@ std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const
 }
 
 bool Runtime::restore(const RunState& state) {
+  cache_.invalidate_all();
   state_ = state;
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {

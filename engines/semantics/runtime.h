@@ -13,6 +13,7 @@
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/connector_cache.h"
 #include "engines/semantics/layout.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -132,6 +133,10 @@ class Runtime {
   bool check_atom_priority_cycle(Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
+  Index store_value(InteractionValue&& value);
+  void begin_values(bool full);
+  void compute_compound(Index compound);
+  void recompute_priorities(Index connector);
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
   void apply_priorities(InteractionValue& value, Index connector_index);
   bool rule_guard(const PriorityRule& rule);
@@ -159,10 +164,13 @@ class Runtime {
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
-  // Per connector: enabled interaction values (indices into values_), computed bottom up.
+  // Per connector: enabled interaction values (indices into values_), computed bottom up. The
+  // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
+  // listed in free_values_.
   std::vector<std::vector<Index>> connector_values_;
-  std::vector<std::uint8_t> connector_done_;
   std::vector<InteractionValue> values_;
+  std::vector<Index> free_values_;
+  ConnectorCache cache_;
   std::vector<Item> items_;
 };
 

@@ -96,8 +96,8 @@ struct Optimised {
 struct Multithread {
   static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
 };
-// The optimised and multithread schedulers join this list as they land.
-using AllEngines = ::testing::Types<Reference>;
+// The multithread scheduler joins this list as it lands.
+using AllEngines = ::testing::Types<Reference, Optimised>;
 
 /// Names the typed instances after the engine (`Conformance/Reference.R03_clock_speed`).
 struct EngineNames {
