@@ -38,8 +38,9 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
     : system_(system),
       atom_connectors_(system.atoms.size()),
       parents_(system.connectors.size()),
-      compound_has_rules_(system.compounds.size(), 0),
+      ruled_(system.connectors.size(), 0),
       time_dependent_(system.connectors.size(), 0),
+      urgent_(system.connectors.size(), 0),
       stale_(system.connectors.size(), 0),
       computed_(system.connectors.size(), 0),
       touched_(system.atoms.size(), 0) {
@@ -57,9 +58,7 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       fixed = fixed && cacheable(code.guard) && cacheable(code.up);
     }
     if (!fixed) volatile_.push_back(k);
-  }
-  for (Index c = 0; c < system.compounds.size(); ++c) {
-    compound_has_rules_[c] = layout.rules[c].empty() ? 0 : 1;
+    ruled_[k] = layout.rules[connector.parent].empty() ? 0 : 1;
   }
 }
 
@@ -93,11 +92,6 @@ void ConnectorCache::begin(TimeValue now, bool full) {
   }
   for (Index atom : touched_list_) touched_[atom] = 0;
   touched_list_.clear();
-}
-
-bool ConnectorCache::needs_priorities(Index k) const {
-  return stale_[k] || compound_has_rules_[system_.connectors[k].parent] ||
-         (time_passed_ && time_dependent_[k]);
 }
 
 void ConnectorCache::priorities_changed(Index k) {

@@ -31,6 +31,7 @@ class ConnectorCache {
   /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
   /// closed upwards over the connectors binding them.
   void begin(TimeValue now, bool full);
+  bool stale(bipc::ir::Index connector) const { return stale_[connector] != 0; }
   /// Whether the connector's values must be computed now: true once per computation for each
   /// stale connector.
   bool claim(bipc::ir::Index connector) {
@@ -42,10 +43,17 @@ class ConnectorCache {
   /// evaluated again: its values are new; its compound has priority rules (their guards read
   /// any atom's data and their closure spans other connectors); or time passed and maximal
   /// progress restricted one of its values (restrictions depend on the date).
-  bool needs_priorities(bipc::ir::Index connector) const;
+  bool needs_priorities(bipc::ir::Index connector) const {
+    return stale_[connector] || ruled_[connector] ||
+           (time_passed_ && time_dependent_[connector]);
+  }
   /// Maximal progress restricted a value of the connector: its priorities depend on the date.
   void note_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 1; }
   void clear_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 0; }
+  /// Whether some value of the connector with priorities applied is urgent (not lazy): only
+  /// those bound the time that may pass, so Runtime::wait_interval visits only such connectors.
+  bool urgent(bipc::ir::Index connector) const { return urgent_[connector] != 0; }
+  void set_urgent(bipc::ir::Index connector, bool urgent) { urgent_[connector] = urgent ? 1 : 0; }
   /// The connector's `after` constraints were evaluated again: connectors of enclosing compounds
   /// that bind its export see them, so become stale (they come later in the bottom-up order).
   void priorities_changed(bipc::ir::Index connector);
@@ -59,8 +67,8 @@ class ConnectorCache {
   std::vector<std::vector<bipc::ir::Index>> atom_connectors_;  // per atom: connectors binding it
   std::vector<std::vector<bipc::ir::Index>> parents_;  // per connector: connectors binding it
   std::vector<bipc::ir::Index> volatile_;              // connectors whose code is not cacheable
-  std::vector<std::uint8_t> compound_has_rules_;
-  std::vector<std::uint8_t> time_dependent_;
+  std::vector<std::uint8_t> ruled_;  // per connector: its compound has priority rules
+  std::vector<std::uint8_t> time_dependent_, urgent_;
   std::vector<std::uint8_t> stale_, computed_;
   std::vector<bipc::ir::Index> stale_list_;
   std::vector<std::uint8_t> touched_;

@@ -26,6 +26,19 @@ bool reads_clock(const bipc::ir::Code& code) {
 
 Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
 
+/// a = a.intersect(b), field by field (see compute_items). Inlined so that `a` stays in
+/// registers: through memory, each call stalled on store forwarding.
+[[gnu::always_inline]] inline void narrow(Interval& a, const Interval& b) {
+  if (b.left > a.left || (b.left == a.left && b.left_open)) {
+    a.left = b.left;
+    a.left_open = b.left_open;
+  }
+  if (b.right < a.right || (b.right == a.right && b.right_open)) {
+    a.right = b.right;
+    a.right_open = b.right_open;
+  }
+}
+
 Constraint intersect(const Constraint& a, const Constraint& b) {
   return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
 }
@@ -671,13 +684,20 @@ void Runtime::begin_values(bool full) {
 void Runtime::recompute_priorities(Index k) {
   for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
   cache_.clear_time_dependent(k);
-  for (Index v : connector_values_[k]) apply_priorities(values_[v], k);
+  bool urgent = false;
+  for (Index v : connector_values_[k]) {
+    apply_priorities(values_[v], k);
+    urgent = urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
+  }
+  cache_.set_urgent(k, urgent);
   cache_.priorities_changed(k);
 }
 
 void Runtime::compute_compound(Index c) {
   // All values of the compound first: priorities compare them with each other.
-  for (Index k : system_.compounds[c].connectors) compute_connector(k);
+  for (Index k : system_.compounds[c].connectors) {
+    if (cache_.stale(k)) compute_connector(k);
+  }
   for (Index k : system_.compounds[c].connectors) {
     if (cache_.needs_priorities(k)) recompute_priorities(k);
   }
@@ -696,43 +716,60 @@ bool Runtime::compute_items() {
     return fail(kInternalError, fault.message);
   }
   cache_.end();
-  // Raw items; their windows are cut to the admissible waiting interval below.
+  // Items with their windows cut to the admissible waiting interval.
+  const Interval w = wait_interval();
+  // Fields are copied one by one: building an Item or an Interval in memory and copying it as
+  // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
+  auto add = [&](const Constraint& c) -> Item* {
+    Interval in = c.interval;
+    narrow(in, w);
+    if (in.empty()) return nullptr;
+    Item& item = items_.emplace_back();
+    item.constraint.interval.left = in.left;
+    item.constraint.interval.right = in.right;
+    item.constraint.interval.left_open = in.left_open;
+    item.constraint.interval.right_open = in.right_open;
+    item.constraint.urgency = c.urgency;
+    return &item;
+  };
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
-      if (!values_[v].after.interval.empty()) {
-        items_.push_back({Item::Kind::Interaction, v, 0, 0, values_[v].after});
-      }
+      const Constraint& after = values_[v].after;
+      if (after.interval.empty()) continue;
+      if (Item* item = add(after)) item->value = v;
     }
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
-    if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint});
+    if (!v) continue;
+    if (Item* item = add(v->constraint)) {
+      item->kind = Item::Kind::Internal;
+      item->atom = atom;
+      item->port = port;
+    }
   }
-  const Interval w = wait_interval();
-  std::vector<Item> listed;
-  for (Item item : items_) {
-    item.constraint.interval = item.constraint.interval.intersect(w);
-    if (!item.constraint.interval.empty()) listed.push_back(item);
-  }
-  items_ = std::move(listed);
   return true;
 }
 
 Interval Runtime::wait_interval() const {
+  // A lazy constraint lets time pass (its wait is `from now`, which leaves w as it is): skipped.
   Interval w = Interval::from(state_.now);
   for (Index k : layout_.listed_connectors) {
+    if (!cache_.urgent(k)) continue;
     for (Index v : connector_values_[k]) {
-      if (!values_[v].after.interval.empty()) w = w.intersect(wait(values_[v].raw, state_.now));
+      const InteractionValue& value = values_[v];
+      if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
+      narrow(w, wait(value.raw, state_.now));
     }
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
-    if (v) w = w.intersect(wait(v->constraint, state_.now));
+    if (v && v->constraint.urgency != Urgency::Lazy) narrow(w, wait(v->constraint, state_.now));
   }
   for (Index a = 0; a < system_.atoms.size(); ++a) {
-    w = w.intersect(state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
+    narrow(w, state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
   }
   return w;
 }
