@@ -54,7 +54,8 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       }
     }
     bool fixed = true;
-    for (const bipc::ir::InteractionCode& code : system.connector_types[connector.type].interactions) {
+    for (const bipc::ir::InteractionCode& code :
+         system.connector_types[connector.type].interactions) {
       fixed = fixed && cacheable(code.guard) && cacheable(code.up);
     }
     if (!fixed) volatile_.push_back(k);

@@ -44,8 +44,7 @@ class ConnectorCache {
   /// any atom's data and their closure spans other connectors); or time passed and maximal
   /// progress restricted one of its values (restrictions depend on the date).
   bool needs_priorities(bipc::ir::Index connector) const {
-    return stale_[connector] || ruled_[connector] ||
-           (time_passed_ && time_dependent_[connector]);
+    return stale_[connector] || ruled_[connector] || (time_passed_ && time_dependent_[connector]);
   }
   /// Maximal progress restricted a value of the connector: its priorities depend on the date.
   void note_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 1; }

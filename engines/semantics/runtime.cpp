@@ -114,6 +114,18 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
   atom_invariant_.assign(system.atoms.size(), Interval::all());
+  time_bound_.assign(system.atoms.size(), 0);
+}
+
+void Runtime::note_time_bound(Index atom) {
+  const bool bound = state_.resume_pending[atom] || !(atom_invariant_[atom] == Interval::all());
+  if (bound == (time_bound_[atom] != 0)) return;
+  time_bound_[atom] = bound ? 1 : 0;
+  if (bound) {
+    ++time_bound_atoms_;
+  } else {
+    --time_bound_atoms_;
+  }
 }
 
 bool Runtime::fail(int code, std::string message) {
@@ -142,6 +154,7 @@ bool Runtime::initialize() {
   state_.clocks.assign(layout_.clock_count, ClockState{});
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
+  for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       const AtomType& type = system_.atom_types[system_.atoms[a].type];
@@ -174,6 +187,7 @@ bool Runtime::initialize() {
       if (type.initial_resume) {
         state_.resume_pending[a] = 1;
         state_.resume_interval[a] = eval_.holds_when(type.initial_resume->guard, atom_frame(a));
+        note_time_bound(a);
       }
       if (!check_invariants(a) || !run_internal_transitions(a)) return false;
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
@@ -188,6 +202,7 @@ bool Runtime::check_invariants(Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
+  note_time_bound(atom);
   for (const bipc::ir::Invariant& inv : type.invariants) {
     bool applies = true;
     if (!inv.places.empty()) {
@@ -206,6 +221,7 @@ bool Runtime::check_invariants(Index atom) {
     if (reads_clock(inv.guard)) {
       const Interval when = eval_.holds_when(inv.guard, f);
       atom_invariant_[atom] = atom_invariant_[atom].intersect(when);
+      note_time_bound(atom);
       holds = when.contains(state_.now);
     } else {
       holds = eval_.holds(inv.guard, f);
@@ -239,6 +255,7 @@ bool Runtime::fire_transition(Index atom, Index transition, Index label) {
   if (t.resume) {
     state_.resume_pending[atom] = 1;
     state_.resume_interval[atom] = eval_.holds_when(t.resume->guard, atom_frame(atom));
+    note_time_bound(atom);
   }
   return check_invariants(atom);
 }
@@ -550,8 +567,7 @@ Index Runtime::store_value(InteractionValue&& value) {
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   // Connectors binding this one are stale too, so nothing refers to its old values any more.
-  free_values_.insert(free_values_.end(), connector_values_[k].begin(),
-                      connector_values_[k].end());
+  free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
   connector_values_[k].clear();
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   const auto& type = system_.connector_types[connector.type];
@@ -574,7 +590,7 @@ void Runtime::compute_connector(Index k) {
       }
     }
   }
-  std::vector<Index>& result = connector_values_[k];
+  IndexList& result = connector_values_[k];
   const std::vector<DefinedInteraction>& defined = layout_.defined[k];
   for (std::uint32_t d = 0; d < defined.size(); ++d) {
     const PortSet ports = defined[d].ports;
@@ -687,7 +703,8 @@ void Runtime::recompute_priorities(Index k) {
   bool urgent = false;
   for (Index v : connector_values_[k]) {
     apply_priorities(values_[v], k);
-    urgent = urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
+    urgent =
+        urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
   }
   cache_.set_urgent(k, urgent);
   cache_.priorities_changed(k);
@@ -768,6 +785,7 @@ Interval Runtime::wait_interval() const {
     const auto& v = port_values_[port_offset_[atom] + port];
     if (v && v->constraint.urgency != Urgency::Lazy) narrow(w, wait(v->constraint, state_.now));
   }
+  if (time_bound_atoms_ == 0) return w;
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     narrow(w, state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
   }
@@ -830,6 +848,7 @@ std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const
 bool Runtime::restore(const RunState& state) {
   cache_.invalidate_all();
   state_ = state;
+  for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
@@ -852,9 +871,12 @@ bool Runtime::execute(const Item& item, TimeValue at) {
 
 /// Resumes atoms whose resume window holds `now`; returns false when one is already past.
 bool Runtime::resume_atoms(TimeValue now) {
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (!state_.resume_pending[a]) continue;
-    state_.resume_pending[a] = 0;
+  std::vector<std::uint8_t>& pending = state_.resume_pending;
+  for (auto it = std::find(pending.begin(), pending.end(), 1); it != pending.end();
+       it = std::find(it + 1, pending.end(), 1)) {
+    const auto a = static_cast<Index>(it - pending.begin());
+    *it = 0;
+    note_time_bound(a);
     if (!update_atom(a)) return false;
   }
   state_.now = std::max(state_.now, now);

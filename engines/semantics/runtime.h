@@ -14,6 +14,7 @@
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/connector_cache.h"
+#include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -150,6 +151,8 @@ class Runtime {
   bool execute_value(Index value);
   bool fire_port(Index atom, Index port);
   bool fail(int code, std::string message);
+  /// Keeps time_bound_atoms_ up to date after the atom's resume state or invariant changed.
+  void note_time_bound(Index atom);
 
   const bipc::ir::System& system_;
   const Layout& layout_;
@@ -164,10 +167,14 @@ class Runtime {
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
+  // Per atom: whether a pending resume or an invariant bounds the time that may pass; atoms
+  // without either leave wait_interval as it is, so it skips the atoms when none has.
+  std::vector<std::uint8_t> time_bound_;
+  std::size_t time_bound_atoms_ = 0;
   // Per connector: enabled interaction values (indices into values_), computed bottom up. The
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
-  std::vector<std::vector<Index>> connector_values_;
+  std::vector<IndexList> connector_values_;
   std::vector<InteractionValue> values_;
   std::vector<Index> free_values_;
   ConnectorCache cache_;

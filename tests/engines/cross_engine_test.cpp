@@ -99,8 +99,8 @@ std::vector<ConformanceCase> simulated_time_cases() {
     if (cells.size() < 8 || cells[1].size() != 3) continue;
     ConformanceCase c{model_path(cells[3]), quoted(cells[4]), {}};
     const std::string& flags = cells[5];
-    const bool simulated_run = flags.find("--real-time") == std::string::npos ||
-                               flags.find("a: ") != std::string::npos;
+    const bool simulated_run =
+        flags.find("--real-time") == std::string::npos || flags.find("a: ") != std::string::npos;
     if (c.model.empty() || c.root.empty() || !simulated_run) continue;
     if (flags.find("not run") != std::string::npos) continue;
     c.options.disable_maximal_progress =
