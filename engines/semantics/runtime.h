@@ -110,6 +110,8 @@ class Runtime {
   std::string format_value(Val v, bipc::ir::ValueKind kind) const;
 
   const std::vector<Item>& items() const { return items_; }
+  /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
+  /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
   const ModelError& error() const { return error_; }
   RunState& state() { return state_; }
