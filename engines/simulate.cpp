@@ -30,6 +30,35 @@ TimeValue random_date(const Interval& interval, RandomStream& random) {
   return first + static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
 }
 
+/// The delay floor(-10 ln u) of random_date's unbounded case, computed only when needed: the
+/// scheduler mostly has to know whether it is below, at or above a given whole number of
+/// nanoseconds, which comparing u with exp(-d / 10) answers without a logarithm. Near those
+/// bounds (within a relative 1e-9, far above the rounding errors of exp and log) the delay is
+/// computed exactly as random_date does, so the choices are the same.
+class ExponentialDelay {
+ public:
+  static TimeValue of(double u) { return static_cast<TimeValue>(std::floor(-10.0 * std::log(u))); }
+  /// The sign of of(u) - d; the bounds of the last d are kept (items mostly share it).
+  int compare(double u, TimeValue d) {
+    if (d < 0) return 1;  // u < 1, so the delay is never negative
+    if (d != d_) {
+      d_ = d;
+      below_d_ = std::exp(-static_cast<double>(d) / 10.0);  // u above it: delay < d
+      below_next_ = std::exp(-static_cast<double>(d + 1) / 10.0);
+    }
+    constexpr double kMargin = 1e-9;
+    if (u > below_d_ * (1 + kMargin)) return -1;
+    if (u < below_next_ * (1 - kMargin)) return 1;
+    if (u < below_d_ * (1 - kMargin) && u > below_next_ * (1 + kMargin)) return 0;
+    const TimeValue exact = of(u);
+    return exact < d ? -1 : exact > d ? 1 : 0;
+  }
+
+ private:
+  TimeValue d_ = -1;
+  double below_d_ = 0, below_next_ = 0;
+};
+
 TimeValue earliest(const Interval& interval, TimeValue now) {
   return std::max(interval.first(), now);
 }
@@ -267,8 +296,24 @@ class Simulation {
     const TimeValue now = runtime_.state().now;
     std::size_t best = 0, ties = 0;
     TimeValue best_criterion = kPlusInfinity, best_date = now;
+    ExponentialDelay delay;
     for (std::size_t i = 0; i < items.size(); ++i) {
       const Interval& interval = items[i].constraint.interval;
+      if (!options_.asap && !options_.first_enabled && !interval.bounded()) {
+        // The planned date is the criterion: often decided without its logarithm.
+        const TimeValue first = interval.first();
+        const double u = random_.uniform01_open();
+        const int order = i == 0 ? -1 : delay.compare(u, best_criterion - first);
+        if (order < 0) {
+          best = i;
+          ties = 1;
+          best_criterion = best_date = first + ExponentialDelay::of(u);
+        } else if (order == 0 && random_.below(++ties) == 0) {
+          best = i;
+          best_date = best_criterion;
+        }
+        continue;
+      }
       const TimeValue planned =
           options_.asap ? earliest(interval, now) : random_date(interval, random_);
       const TimeValue criterion = options_.first_enabled ? earliest(interval, now) : planned;

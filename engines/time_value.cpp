@@ -46,13 +46,6 @@ std::string format_time(TimeValue t) {
   return text;
 }
 
-bool Interval::empty() const {
-  if (left > right) return true;
-  if (left == right) return left_open || right_open;
-  // On integer nanoseconds ]t, t+1[ holds no point.
-  return left_open && right_open && right - left == 1;
-}
-
 bool Interval::contains(TimeValue t) const {
   if (left_open ? t <= left : t < left) return false;
   if (right_open ? t >= right : t > right) return false;
@@ -65,19 +58,6 @@ TimeValue Interval::first() const {
 
 TimeValue Interval::last() const {
   return right_open && right != kPlusInfinity && right != kMinusInfinity ? right - 1 : right;
-}
-
-Interval Interval::intersect(const Interval& other) const {
-  Interval result = *this;
-  if (other.left > left || (other.left == left && other.left_open)) {
-    result.left = other.left;
-    result.left_open = other.left_open;
-  }
-  if (other.right < right || (other.right == right && other.right_open)) {
-    result.right = other.right;
-    result.right_open = other.right_open;
-  }
-  return result;
 }
 
 std::string format_interval(const Interval& interval) {

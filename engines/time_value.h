@@ -35,14 +35,30 @@ struct Interval {
   static Interval point(TimeValue t) { return {t, t, false, false}; }
   static Interval from(TimeValue t) { return {t, kPlusInfinity, false, false}; }
 
-  bool empty() const;
+  bool empty() const {
+    if (left > right) return true;
+    if (left == right) return left_open || right_open;
+    // On integer nanoseconds ]t, t+1[ holds no point.
+    return left_open && right_open && right - left == 1;
+  }
   bool contains(TimeValue t) const;
   bool bounded() const { return right != kPlusInfinity; }
   /// The smallest point of the set (for an open left end, the next nanosecond).
   TimeValue first() const;
   /// The largest point of the set (for an open right end, the previous nanosecond).
   TimeValue last() const;
-  Interval intersect(const Interval& other) const;
+  Interval intersect(const Interval& other) const {
+    Interval result = *this;
+    if (other.left > left || (other.left == left && other.left_open)) {
+      result.left = other.left;
+      result.left_open = other.left_open;
+    }
+    if (other.right < right || (other.right == right && other.right_open)) {
+      result.right = other.right;
+      result.right_open = other.right_open;
+    }
+    return result;
+  }
   bool operator==(const Interval&) const = default;
 };
 

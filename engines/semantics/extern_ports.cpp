@@ -29,7 +29,7 @@ bool Runtime::open_extern_ports() {
   return true;
 }
 
-void Runtime::collect_extern_items() {
+void Runtime::refresh_extern_events() {
   for (ExternPortState& e : extern_ports_) {
     e.expected.reset();
     e.unexpected = false;
@@ -56,7 +56,6 @@ void Runtime::collect_extern_items() {
     }
     if (taken) {
       e.expected = taken;
-      items_.push_back({Item::Kind::External, 0, e.atom, e.port, *taken, {}});
     } else if (port.policy != bipc::ExternPolicy::Remember) {
       e.unexpected = true;
     }

@@ -27,6 +27,19 @@ bool reads_clock(const bipc::ir::Code& code) {
 
 Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
 
+/// a = a.intersect(b), field by field (see compute_items). Inlined so that `a` stays in
+/// registers: through memory, each call stalled on store forwarding.
+[[gnu::always_inline]] inline void narrow(Interval& a, const Interval& b) {
+  if (b.left > a.left || (b.left == a.left && b.left_open)) {
+    a.left = b.left;
+    a.left_open = b.left_open;
+  }
+  if (b.right < a.right || (b.right == a.right && b.right_open)) {
+    a.right = b.right;
+    a.right_open = b.right_open;
+  }
+}
+
 Constraint intersect(const Constraint& a, const Constraint& b) {
   return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
 }
@@ -96,14 +109,32 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
       call_{out, strings, &random, {}},
       eval_(system, functions, call_),
       options_(options),
-      maximal_progress_(options.maximal_progress) {
+      maximal_progress_(options.maximal_progress),
+      cache_(system, layout) {
   for (Index a = 0; a < system.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
   atom_invariant_.assign(system.atoms.size(), Interval::all());
+  bounds_time_.assign(system.atoms.size(), 0);
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(system, functions, call_, options.threads);
+  }
+}
+
+void Runtime::note_atom_changed(Index atom) {
+  cache_.touch_atom(atom);
+  note_time_bound(atom);
+}
+
+void Runtime::note_time_bound(Index atom) {
+  const bool bound = state_.resume_pending[atom] || !(atom_invariant_[atom] == Interval::all());
+  if (bound == (bounds_time_[atom] != 0)) return;
+  bounds_time_[atom] = bound ? 1 : 0;
+  if (bound) {
+    ++time_bound_atoms_;
+  } else {
+    --time_bound_atoms_;
   }
 }
 
@@ -132,6 +163,7 @@ Frame Runtime::atom_frame(Index atom) {
 }
 
 bool Runtime::initialize() {
+  cache_.invalidate_all();
   state_ = RunState{};
   state_.data.assign(layout_.data_size, make_int(0));
   state_.marking.assign(layout_.place_count, 0);
@@ -139,6 +171,7 @@ bool Runtime::initialize() {
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
   if (!open_extern_ports()) return false;
+  for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       const AtomType& type = system_.atom_types[system_.atoms[a].type];
@@ -171,6 +204,7 @@ bool Runtime::initialize() {
       if (type.initial_resume) {
         state_.resume_pending[a] = 1;
         state_.resume_interval[a] = eval_.holds_when(type.initial_resume->guard, atom_frame(a));
+        note_time_bound(a);
       }
       if (!check_invariants(a) || !run_internal_transitions(a)) return false;
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
@@ -185,6 +219,7 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
+  if (!s.on_worker) note_time_bound(atom);
   for (const bipc::ir::Invariant& inv : type.invariants) {
     bool applies = true;
     if (!inv.places.empty()) {
@@ -203,6 +238,7 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
     if (reads_clock(inv.guard)) {
       const Interval when = s.eval.holds_when(inv.guard, f);
       atom_invariant_[atom] = atom_invariant_[atom].intersect(when);
+      if (!s.on_worker) note_time_bound(atom);
       holds = when.contains(state_.now);
     } else {
       holds = s.eval.holds(inv.guard, f);
@@ -220,6 +256,7 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
+  if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (Index p : t.from) state_.marking[base + p] = 0;
   for (Index p : t.to) {
     if (state_.marking[base + p]) {
@@ -235,6 +272,7 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
   if (t.resume) {
     state_.resume_pending[atom] = 1;
     state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
+    if (!s.on_worker) note_time_bound(atom);
   }
   return check_invariants(s, atom);
 }
@@ -265,6 +303,7 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
+  if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Frame f = atom_frame(s, atom);
   for (Index t = 0; t < type.transitions.size(); ++t) {
@@ -538,9 +577,22 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
   return true;
 }
 
+Index Runtime::store_value(InteractionValue&& value) {
+  if (free_values_.empty()) {
+    values_.push_back(std::move(value));
+    return static_cast<Index>(values_.size() - 1);
+  }
+  const Index slot = free_values_.back();
+  free_values_.pop_back();
+  values_[slot] = std::move(value);
+  return slot;
+}
+
 void Runtime::compute_connector(Index k) {
-  if (connector_done_[k]) return;
-  connector_done_[k] = 1;
+  if (!cache_.claim(k)) return;
+  // Connectors binding this one are stale too, so nothing refers to its old values any more.
+  free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
+  connector_values_[k].clear();
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   const auto& type = system_.connector_types[connector.type];
   const std::size_t n = connector.bound.size();
@@ -562,7 +614,7 @@ void Runtime::compute_connector(Index k) {
       }
     }
   }
-  std::vector<Index>& result = connector_values_[k];
+  IndexList& result = connector_values_[k];
   const std::vector<DefinedInteraction>& defined = layout_.defined[k];
   for (std::uint32_t d = 0; d < defined.size(); ++d) {
     const PortSet ports = defined[d].ports;
@@ -603,8 +655,7 @@ void Runtime::compute_connector(Index k) {
         if (!code || eval_.holds(code->guard, f)) {
           if (code) eval_.execute(code->up, f);
           value.after = value.raw;
-          result.push_back(static_cast<Index>(values_.size()));
-          values_.push_back(std::move(value));
+          result.push_back(store_value(std::move(value)));
         }
       }
       // Next combination: the last port varies fastest (first port outermost).
@@ -631,6 +682,7 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
       if (&other == &value) continue;
       if (dominated_locally(value, other) && !dominated_locally(other, value)) {
         restrict_by(value.after, other.raw);
+        cache_.note_time_dependent(k);
       }
     }
   }
@@ -660,72 +712,125 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
   dominate({k, value.ports});
 }
 
+void Runtime::begin_values(bool full) {
+  if (full) {
+    values_.clear();
+    free_values_.clear();
+    connector_values_.assign(system_.connectors.size(), {});
+  }
+  cache_.begin(state_.now, full);
+}
+
+void Runtime::recompute_priorities(Index k) {
+  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
+  cache_.clear_time_dependent(k);
+  bool urgent = false;
+  for (Index v : connector_values_[k]) {
+    apply_priorities(values_[v], k);
+    urgent =
+        urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
+  }
+  cache_.set_urgent(k, urgent);
+  cache_.priorities_changed(k);
+}
+
+void Runtime::compute_compound(Index c) {
+  // All values of the compound first: priorities compare them with each other.
+  for (Index k : system_.compounds[c].connectors) {
+    if (cache_.stale(k)) compute_connector(k);
+  }
+  for (Index k : system_.compounds[c].connectors) {
+    if (cache_.needs_priorities(k)) recompute_priorities(k);
+  }
+}
+
 bool Runtime::compute_items() {
-  values_.clear();
   items_.clear();
-  connector_values_.assign(system_.connectors.size(), {});
-  connector_done_.assign(system_.connectors.size(), 0);
   time_bound_ = time_bound();
   if (!check_compound_priority_cycles()) return false;
+  begin_values(!options_.incremental || cache_.all_stale());
   try {
     // Compounds bottom-up: a compound export of a sub-connector needs its values after
     // priorities. Deeper compounds have larger indices than their parents.
-    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) {
-      for (Index k : system_.compounds[c].connectors) compute_connector(k);
-      for (Index k : system_.compounds[c].connectors) {
-        for (Index v : connector_values_[k]) apply_priorities(values_[v], k);
-      }
-    }
+    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) compute_compound(c);
   } catch (const CodeFault& fault) {
+    cache_.invalidate_all();
     return fail(kInternalError, fault.message);
   }
-  // Raw items; their windows are cut to the admissible waiting interval below.
+  cache_.end();
+  // Items with their windows cut to the admissible waiting interval.
+  refresh_extern_events();
+  const Interval w = wait_interval();
+  // Fields are copied one by one: building an Item or an Interval in memory and copying it as
+  // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
+  auto add = [&](const Constraint& c) -> Item* {
+    Interval in = c.interval;
+    narrow(in, w);
+    if (in.empty()) return nullptr;
+    Item& item = items_.emplace_back();
+    item.constraint.interval.left = in.left;
+    item.constraint.interval.right = in.right;
+    item.constraint.interval.left_open = in.left_open;
+    item.constraint.interval.right_open = in.right_open;
+    item.constraint.urgency = c.urgency;
+    item.offered = c;
+    return &item;
+  };
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
-      if (!values_[v].after.interval.empty()) {
-        items_.push_back({Item::Kind::Interaction, v, 0, 0, values_[v].after, {}});
-      }
+      const Constraint& after = values_[v].after;
+      if (after.interval.empty()) continue;
+      if (Item* item = add(after)) item->value = v;
     }
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
-    if (v) items_.push_back({Item::Kind::Internal, 0, atom, port, v->constraint, {}});
+    if (!v) continue;
+    if (Item* item = add(v->constraint)) {
+      item->kind = Item::Kind::Internal;
+      item->atom = atom;
+      item->port = port;
+    }
   }
-  collect_extern_items();
-  const Interval w = wait_interval();
-  std::vector<Item> listed;
-  for (Item item : items_) {
-    item.offered = item.constraint;
-    item.constraint.interval = item.constraint.interval.intersect(w);
-    if (!item.constraint.interval.empty()) listed.push_back(item);
+  for (const ExternPortState& e : extern_ports_) {
+    if (!e.expected) continue;
+    if (Item* item = add(*e.expected)) {
+      item->kind = Item::Kind::External;
+      item->atom = e.atom;
+      item->port = e.port;
+    }
   }
-  items_ = std::move(listed);
   return true;
 }
 
 Interval Runtime::wait_interval() const {
+  // A lazy constraint lets time pass (its wait is `from now`, which leaves w as it is): skipped.
   Interval w = Interval::from(state_.now);
   for (Index k : layout_.listed_connectors) {
+    if (!cache_.urgent(k)) continue;
     for (Index v : connector_values_[k]) {
-      if (!values_[v].after.interval.empty()) w = w.intersect(wait(values_[v].raw, state_.now));
+      const InteractionValue& value = values_[v];
+      if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
+      narrow(w, wait(value.raw, state_.now));
     }
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
-    if (v) w = w.intersect(wait(v->constraint, state_.now));
+    if (v && v->constraint.urgency != Urgency::Lazy) narrow(w, wait(v->constraint, state_.now));
   }
   for (const ExternPortState& e : extern_ports_) {
-    if (e.expected) w = w.intersect(wait(*e.expected, state_.now));
+    if (e.expected) narrow(w, wait(*e.expected, state_.now));
   }
   return w.intersect(time_bound());
 }
 
 Interval Runtime::time_bound() const {
   Interval w = Interval::all();
+  if (time_bound_atoms_ == 0) return w;
   for (Index a = 0; a < system_.atoms.size(); ++a) {
-    w = w.intersect(state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
+    narrow(w, state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
   }
   return w;
 }
@@ -790,7 +895,9 @@ std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const
 }
 
 bool Runtime::restore(const RunState& state) {
+  cache_.invalidate_all();
   state_ = state;
+  for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
@@ -816,9 +923,12 @@ bool Runtime::execute(const Item& item, TimeValue at) {
 
 /// Resumes atoms whose resume window holds `now`; returns false when one is already past.
 bool Runtime::resume_atoms(TimeValue now) {
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (!state_.resume_pending[a]) continue;
-    state_.resume_pending[a] = 0;
+  std::vector<std::uint8_t>& pending = state_.resume_pending;
+  for (auto it = std::find(pending.begin(), pending.end(), 1); it != pending.end();
+       it = std::find(it + 1, pending.end(), 1)) {
+    const auto a = static_cast<Index>(it - pending.begin());
+    *it = 0;
+    note_time_bound(a);
     if (!update_atom(a)) return false;
   }
   state_.now = std::max(state_.now, now);

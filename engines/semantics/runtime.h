@@ -15,6 +15,8 @@
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/connector_cache.h"
+#include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -129,6 +131,8 @@ class Runtime {
   std::string format_value(Val v, bipc::ir::ValueKind kind) const;
 
   const std::vector<Item>& items() const { return items_; }
+  /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
+  /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
   const ModelError& error() const { return error_; }
   RunState& state() { return state_; }
@@ -165,6 +169,8 @@ class Runtime {
     /// When set, the data of the one atom being fired: a private copy, so that threads firing
     /// neighbouring atoms do not write to the same cache lines of the state.
     Val* atom_data = nullptr;
+    /// Firing on a worker thread: the scheduler's shared bookkeeping is left to the caller.
+    bool on_worker = false;
     bool fail(int code, std::string message) {
       error = {code, std::move(message)};
       return false;
@@ -185,6 +191,10 @@ class Runtime {
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
+  Index store_value(InteractionValue&& value);
+  void begin_values(bool full);
+  void compute_compound(Index compound);
+  void recompute_priorities(Index connector);
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
   void apply_priorities(InteractionValue& value, Index connector_index);
   bool rule_guard(const PriorityRule& rule);
@@ -208,8 +218,13 @@ class Runtime {
   bool fire_port(AtomScratch s, Index atom, Index port);
   bool fail(int code, std::string message);
   bool open_extern_ports();
-  void collect_extern_items();
+  /// Pulls the extern ports' next events and decides which ports take theirs (expected).
+  void refresh_extern_events();
   bool fire_extern(const Item& item);
+  /// Keeps time_bound_atoms_ up to date after the atom's resume state or invariant changed.
+  void note_time_bound(Index atom);
+  /// An atom fired on a worker thread: its connectors are stale, its time bound may differ.
+  void note_atom_changed(Index atom);
 
   const bipc::ir::System& system_;
   const Layout& layout_;
@@ -226,10 +241,17 @@ class Runtime {
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
-  // Per connector: enabled interaction values (indices into values_), computed bottom up.
-  std::vector<std::vector<Index>> connector_values_;
-  std::vector<std::uint8_t> connector_done_;
+  // Per atom: whether a pending resume or an invariant bounds the time that may pass; atoms
+  // without either leave wait_interval as it is, so it skips the atoms when none has.
+  std::vector<std::uint8_t> bounds_time_;
+  std::size_t time_bound_atoms_ = 0;
+  // Per connector: enabled interaction values (indices into values_), computed bottom up. The
+  // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
+  // listed in free_values_.
+  std::vector<IndexList> connector_values_;
   std::vector<InteractionValue> values_;
+  std::vector<Index> free_values_;
+  ConnectorCache cache_;
   std::vector<Item> items_;
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
   // Per compound: the sets of active priority rules already found free of cycles.

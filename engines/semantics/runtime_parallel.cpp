@@ -140,7 +140,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
     const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
     t.data.assign(first, first + static_cast<std::ptrdiff_t>(
                                      system_.atom_types[system_.atoms[atom].type].data.size()));
-    AtomScratch s{t.eval, p.errors[i], t.data.data()};
+    AtomScratch s{t.eval, p.errors[i], t.data.data(), /*on_worker=*/true};
     try {
       p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
@@ -153,6 +153,8 @@ bool Runtime::execute_value_in_parallel(Index index) {
     std::copy(t.data.begin(), t.data.end(), first);
   };
   p.pool.run(count, fire);
+  // The scheduler's bookkeeping is shared: the fired atoms are noted once the threads joined.
+  for (std::size_t i = 0; i < count; ++i) note_atom_changed(p.ports[i].first);
   for (std::size_t i = 0; i < count; ++i) {
     if (!p.fired[i]) {
       error_ = std::move(p.errors[i]);

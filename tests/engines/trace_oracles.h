@@ -96,8 +96,7 @@ struct Optimised {
 struct Multithread {
   static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
 };
-// The optimised scheduler joins this list as it lands.
-using AllEngines = ::testing::Types<Reference, Multithread>;
+using AllEngines = ::testing::Types<Reference, Optimised, Multithread>;
 
 /// Names the typed instances after the engine (`Conformance/Reference.R03_clock_speed`).
 struct EngineNames {

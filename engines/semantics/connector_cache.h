@@ -1,0 +1,80 @@
+// Bookkeeping of the optimised scheduler: which connectors' interaction values are stale after
+// an execution, so that Runtime::compute_items recomputes only those.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/semantics/layout.h"
+#include "engines/time_value.h"
+
+namespace smcbip::engines {
+
+/// Tracks, between two computations of the enabled items, the atoms an execution touched and
+/// derives the connectors whose values may differ from the kept ones. A connector's values are a
+/// function of its bound atoms' offers and data, its sub-connectors' values and its own data
+/// (written only when it executes, which fires its atoms); connectors whose guard or `up` may
+/// read anything else (extern calls, which may draw from the run's random stream) are always
+/// stale. Priorities: see needs_priorities.
+class ConnectorCache {
+ public:
+  ConnectorCache(const bipc::ir::System& system, const Layout& layout);
+
+  /// Forgets every kept value: the next computation is a full one (initialize, restore).
+  void invalidate_all() { all_stale_ = true; }
+  /// Whether the next computation must be a full one.
+  bool all_stale() const { return all_stale_; }
+  /// The atom's marking, data, resume state or offers may have changed.
+  void touch_atom(bipc::ir::Index atom);
+
+  /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
+  /// closed upwards over the connectors binding them.
+  void begin(TimeValue now, bool full);
+  bool stale(bipc::ir::Index connector) const { return stale_[connector] != 0; }
+  /// Whether the connector's values must be computed now: true once per computation for each
+  /// stale connector.
+  bool claim(bipc::ir::Index connector) {
+    if (!stale_[connector] || computed_[connector]) return false;
+    computed_[connector] = 1;
+    return true;
+  }
+  /// Whether the priorities (the `after` constraints) of the connector's values must be
+  /// evaluated again: its values are new; its compound has priority rules (their guards read
+  /// any atom's data and their closure spans other connectors); or time passed and maximal
+  /// progress restricted one of its values (restrictions depend on the date).
+  bool needs_priorities(bipc::ir::Index connector) const {
+    return stale_[connector] || ruled_[connector] || (time_passed_ && time_dependent_[connector]);
+  }
+  /// Maximal progress restricted a value of the connector: its priorities depend on the date.
+  void note_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 1; }
+  void clear_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 0; }
+  /// Whether some value of the connector with priorities applied is urgent (not lazy): only
+  /// those bound the time that may pass, so Runtime::wait_interval visits only such connectors.
+  bool urgent(bipc::ir::Index connector) const { return urgent_[connector] != 0; }
+  void set_urgent(bipc::ir::Index connector, bool urgent) { urgent_[connector] = urgent ? 1 : 0; }
+  /// The connector's `after` constraints were evaluated again: connectors of enclosing compounds
+  /// that bind its export see them, so become stale (they come later in the bottom-up order).
+  void priorities_changed(bipc::ir::Index connector);
+  /// Ends a successful computation: every connector's values are up to date.
+  void end();
+
+ private:
+  void mark_stale(bipc::ir::Index connector);
+
+  const bipc::ir::System& system_;
+  std::vector<std::vector<bipc::ir::Index>> atom_connectors_;  // per atom: connectors binding it
+  std::vector<std::vector<bipc::ir::Index>> parents_;  // per connector: connectors binding it
+  std::vector<bipc::ir::Index> volatile_;              // connectors whose code is not cacheable
+  std::vector<std::uint8_t> ruled_;  // per connector: its compound has priority rules
+  std::vector<std::uint8_t> time_dependent_, urgent_;
+  std::vector<std::uint8_t> stale_, computed_;
+  std::vector<bipc::ir::Index> stale_list_;
+  std::vector<std::uint8_t> touched_;
+  std::vector<bipc::ir::Index> touched_list_;
+  bool all_stale_ = true;
+  bool time_passed_ = true;
+  TimeValue last_now_ = 0;
+};
+
+}  // namespace smcbip::engines
