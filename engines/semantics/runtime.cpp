@@ -577,14 +577,15 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
   return true;
 }
 
-Index Runtime::store_value(InteractionValue&& value) {
+Index Runtime::acquire_value() {
+  // Slots are reused with their vectors' capacity: no allocation once the pool has grown.
   if (free_values_.empty()) {
-    values_.push_back(std::move(value));
+    values_.emplace_back();
     return static_cast<Index>(values_.size() - 1);
   }
   const Index slot = free_values_.back();
   free_values_.pop_back();
-  values_[slot] = std::move(value);
+  values_[slot].choice.clear();
   return slot;
 }
 
@@ -596,7 +597,16 @@ void Runtime::compute_connector(Index k) {
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   const auto& type = system_.connector_types[connector.type];
   const std::size_t n = connector.bound.size();
-  std::vector<std::vector<PortValue>> offers(n);
+  // Scratch per recursion depth (sub-connectors are computed from inside this loop).
+  if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
+  ConnectorScratch& scratch = scratch_[scratch_depth_];
+  const struct DepthGuard {
+    std::size_t& depth;
+    ~DepthGuard() { --depth; }
+  } depth_guard{++scratch_depth_};
+  std::vector<std::vector<PortValue>>& offers = scratch.offers;
+  if (offers.size() < n) offers.resize(n);
+  for (std::size_t i = 0; i < n; ++i) offers[i].clear();
   for (std::size_t i = 0; i < n; ++i) {
     for (const bipc::ir::PortRef& ref : connector.bound[i]) {
       if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
@@ -618,7 +628,8 @@ void Runtime::compute_connector(Index k) {
   const std::vector<DefinedInteraction>& defined = layout_.defined[k];
   for (std::uint32_t d = 0; d < defined.size(); ++d) {
     const PortSet ports = defined[d].ports;
-    std::vector<std::size_t> members;
+    std::vector<std::size_t>& members = scratch.members;
+    members.clear();
     bool possible = true;
     for (std::size_t i = 0; i < n; ++i) {
       if (!(ports & (PortSet{1} << i))) continue;
@@ -629,9 +640,11 @@ void Runtime::compute_connector(Index k) {
     const bipc::ir::InteractionCode* code =
         defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)]
                              : nullptr;
-    std::vector<std::size_t> pick(members.size(), 0);
+    std::vector<std::size_t>& pick = scratch.pick;
+    pick.assign(members.size(), 0);
     for (;;) {
-      InteractionValue value;
+      const Index slot = acquire_value();
+      InteractionValue& value = values_[slot];
       value.connector = k;
       value.defined = d;
       value.ports = ports;
@@ -655,8 +668,12 @@ void Runtime::compute_connector(Index k) {
         if (!code || eval_.holds(code->guard, f)) {
           if (code) eval_.execute(code->up, f);
           value.after = value.raw;
-          result.push_back(store_value(std::move(value)));
+          result.push_back(slot);
+        } else {
+          free_values_.push_back(slot);
         }
+      } else {
+        free_values_.push_back(slot);
       }
       // Next combination: the last port varies fastest (first port outermost).
       std::size_t m = members.size();
@@ -714,9 +731,11 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
 
 void Runtime::begin_values(bool full) {
   if (full) {
-    values_.clear();
+    // Every slot becomes free, keeping its vectors for reuse.
     free_values_.clear();
-    connector_values_.assign(system_.connectors.size(), {});
+    for (Index v = static_cast<Index>(values_.size()); v-- > 0;) free_values_.push_back(v);
+    connector_values_.resize(system_.connectors.size());
+    for (IndexList& list : connector_values_) list.clear();
   }
   cache_.begin(state_.now, full);
 }
@@ -877,21 +896,26 @@ bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
 
 std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const {
   std::vector<std::pair<Index, Index>> ports;
-  if (item.kind != Item::Kind::Interaction) {
-    ports.emplace_back(item.atom, item.port);
-    return ports;
-  }
-  std::function<void(Index)> walk = [&](Index value) {
-    for (const PortValue& pv : values_[value].choice) {
-      if (pv.from_atom) {
-        ports.emplace_back(pv.atom, pv.port);
-      } else {
-        walk(pv.sub);
-      }
-    }
-  };
-  walk(item.value);
+  append_atom_ports(item, ports);
   return ports;
+}
+
+void Runtime::append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const {
+  if (item.kind != Item::Kind::Interaction) {
+    out.emplace_back(item.atom, item.port);
+    return;
+  }
+  append_value_ports(item.value, out);
+}
+
+void Runtime::append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const {
+  for (const PortValue& pv : values_[value].choice) {
+    if (pv.from_atom) {
+      out.emplace_back(pv.atom, pv.port);
+    } else {
+      append_value_ports(pv.sub, out);
+    }
+  }
 }
 
 bool Runtime::restore(const RunState& state) {

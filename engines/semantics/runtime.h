@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <set>
@@ -147,6 +148,8 @@ class Runtime {
   bool receive_unexpected_events(TimeValue upto);
   /// The atom ports (atom, port) an item fires, in execution order.
   std::vector<std::pair<Index, Index>> atom_ports(const Item& item) const;
+  /// As atom_ports, appended to `out` (no allocation once `out` has grown).
+  void append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const;
   /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
   double clock_value(Index atom, Index clock, TimeValue at) const;
   /// The first date from `now` at which that clock reaches `value` (kPlusInfinity if never).
@@ -191,7 +194,8 @@ class Runtime {
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
-  Index store_value(InteractionValue&& value);
+  /// A free slot of values_ for a new value (its vectors keep their capacity).
+  Index acquire_value();
   void begin_values(bool full);
   void compute_compound(Index compound);
   void recompute_priorities(Index connector);
@@ -217,6 +221,7 @@ class Runtime {
   bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
   bool fire_port(AtomScratch s, Index atom, Index port);
   bool fail(int code, std::string message);
+  void append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const;
   bool open_extern_ports();
   /// Pulls the extern ports' next events and decides which ports take theirs (expected).
   void refresh_extern_events();
@@ -251,6 +256,13 @@ class Runtime {
   std::vector<IndexList> connector_values_;
   std::vector<InteractionValue> values_;
   std::vector<Index> free_values_;
+  // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
+  struct ConnectorScratch {
+    std::vector<std::vector<PortValue>> offers;
+    std::vector<std::size_t> members, pick;
+  };
+  std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
+  std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
   std::vector<Item> items_;
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order

@@ -51,43 +51,52 @@ DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributio
                          RandomStream& random, TimeValue unbounded_mean)
     : system_(system), random_(random), unbounded_mean_(unbounded_mean), custom_(custom) {}
 
-std::size_t DatePlanner::KeyHash::operator()(const std::vector<std::uint32_t>& key) const {
+std::size_t DatePlanner::KeyHash::operator()(std::span<const std::uint32_t> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ull;
   for (std::uint32_t x : key) h = (h ^ x) * 0xff51afd7ed558ccdull;
   return static_cast<std::size_t>(h ^ (h >> 32));
 }
 
-std::vector<std::uint32_t> DatePlanner::key_of(const Runtime& runtime, const Item& item) const {
-  std::vector<std::uint32_t> key;
-  key.push_back(static_cast<std::uint32_t>(item.kind));
+void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
+  key_.clear();
+  ports_.clear();
+  key_.push_back(static_cast<std::uint32_t>(item.kind));
   if (item.kind == Item::Kind::Interaction) {
     const InteractionValue& value = runtime.values()[item.value];
-    key.push_back(value.connector);
-    key.push_back(value.defined);
+    key_.push_back(value.connector);
+    key_.push_back(value.defined);
   }
-  for (const auto& [atom, port] : runtime.atom_ports(item)) {
-    key.push_back(atom);
-    key.push_back(port);
+  runtime.append_atom_ports(item, ports_);
+  for (const auto& [atom, port] : ports_) {
+    key_.push_back(atom);
+    key_.push_back(port);
   }
-  return key;
+}
+
+DatePlanner::Planned& DatePlanner::plan_of() {
+  auto found = plans_.find(std::span<const std::uint32_t>(key_));
+  if (found == plans_.end()) found = plans_.emplace(key_, Planned{}).first;
+  return found->second;
 }
 
 bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::string& error) {
   dates.clear();
-  next_plans_.clear();
+  ++generation_;
   for (const Item& item : runtime.items()) {
-    std::vector<std::uint32_t> key = key_of(runtime, item);
-    auto kept = plans_.find(key);
-    TimeValue date = 0;
-    if (kept != plans_.end() && same(kept->second.offered, item.offered)) {
-      date = kept->second.date;
-    } else if (!draw(runtime, item, date, error)) {
-      return false;
+    key_of(runtime, item);
+    Planned& planned = plan_of();
+    const bool kept = planned.seen + 1 == generation_ && same(planned.offered, item.offered);
+    if (!kept) {
+      if (!draw(runtime, item, planned.date, error)) return false;
+      planned.offered = item.offered;
     }
-    dates.push_back(date);
-    next_plans_.insert_or_assign(std::move(key), Planned{item.offered, date});
+    planned.seen = generation_;
+    dates.push_back(planned.date);
   }
-  std::swap(plans_, next_plans_);
+  // Items not enabled now lose their dates: they draw afresh when enabled again.
+  if (plans_.size() > 2 * runtime.items().size() + 16) {
+    std::erase_if(plans_, [&](const auto& entry) { return entry.second.seen != generation_; });
+  }
   return true;
 }
 
@@ -95,7 +104,7 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
   // The item's own window from now: the dates other items' deadlines cut off stay possible, as
   // the race decides whether the item gets there.
   const Interval window = item.offered.interval.intersect(Interval::from(runtime.state().now));
-  for (const auto& [atom, port] : runtime.atom_ports(item)) {
+  for (const auto& [atom, port] : ports_) {
     const auto& type = system_.atom_types[system_.atoms[atom].type];
     if (type.ports[port].stochastic) {
       return draw_stochastic(runtime, atom, port, window, date, error);
@@ -105,8 +114,9 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
   return true;
 }
 
-bool DatePlanner::is_stochastic(const Runtime& runtime, const Item& item) const {
-  for (const auto& [atom, port] : runtime.atom_ports(item)) {
+bool DatePlanner::is_stochastic(const Runtime& runtime, const Item& item) {
+  key_of(runtime, item);
+  for (const auto& [atom, port] : ports_) {
     if (system_.atom_types[system_.atoms[atom].type].ports[port].stochastic) return true;
   }
   return false;
@@ -115,10 +125,9 @@ bool DatePlanner::is_stochastic(const Runtime& runtime, const Item& item) const 
 void DatePlanner::replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates) {
   const std::vector<Item>& items = runtime.items();
   for (std::size_t i = 0; i < items.size(); ++i) {
-    if (is_stochastic(runtime, items[i])) continue;
+    if (is_stochastic(runtime, items[i])) continue;  // sets key_ for items[i]
     dates[i] = draw_timed(items[i].constraint.urgency, items[i].constraint.interval);
-    std::vector<std::uint32_t> key = key_of(runtime, items[i]);
-    plans_.insert_or_assign(std::move(key), Planned{items[i].offered, dates[i]});
+    plan_of().date = dates[i];
   }
 }
 

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <cstdint>
+#include <algorithm>
 #include <map>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -45,28 +47,44 @@ class DatePlanner {
   void replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates);
 
  private:
+  using Key = std::vector<std::uint32_t>;
   struct Planned {
     Constraint offered;
     TimeValue date = 0;
+    std::uint64_t seen = 0;  // the last plan() call that found the item enabled
   };
+  // Transparent: items are looked up by a span over a reused buffer, without allocating.
   struct KeyHash {
-    std::size_t operator()(const std::vector<std::uint32_t>& key) const;
+    using is_transparent = void;
+    std::size_t operator()(std::span<const std::uint32_t> key) const;
   };
-  using Plans = std::unordered_map<std::vector<std::uint32_t>, Planned, KeyHash>;
+  struct KeyEqual {
+    using is_transparent = void;
+    bool operator()(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) const {
+      return std::equal(a.begin(), a.end(), b.begin(), b.end());
+    }
+  };
+  using Plans = std::unordered_map<Key, Planned, KeyHash, KeyEqual>;
 
-  /// Identifies an item across steps: its connector (or atom port) and the atom ports it fires.
-  std::vector<std::uint32_t> key_of(const Runtime& runtime, const Item& item) const;
+  /// Identifies an item across steps: its connector (or atom port) and the atom ports it fires;
+  /// written to key_, the item's atom ports to ports_.
+  void key_of(const Runtime& runtime, const Item& item);
+  /// The plan of the item whose key is in key_ (created empty when new).
+  Planned& plan_of();
   bool draw(Runtime& runtime, const Item& item, TimeValue& date, std::string& error);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
-  bool is_stochastic(const Runtime& runtime, const Item& item) const;
+  bool is_stochastic(const Runtime& runtime, const Item& item);
 
   const bipc::ir::System& system_;
   RandomStream& random_;
   TimeValue unbounded_mean_;
   const CustomDistributions& custom_;
-  Plans plans_, next_plans_;
+  Plans plans_;
+  std::uint64_t generation_ = 1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
+  Key key_;
+  std::vector<std::pair<Index, Index>> ports_;
 };
 
 }  // namespace smcbip::engines
