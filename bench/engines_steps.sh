@@ -18,7 +18,7 @@ models_dir="$build_dir/bench-models"
 sizes=(10 100 1000 10000)
 runs=${RUNS:-3}
 target_seconds=${TARGET_SECONDS:-1.0}
-work=${WORK:-1000}
+work=${WORK:-5000}
 threads=${THREADS:-2}
 
 for tool in "$smcbip" "$generator"; do

@@ -45,10 +45,18 @@ struct Enumerator {
     bool domain_one, domain_zero;
   };
   std::vector<PortSet>& out;
+  std::size_t limit;
+  bool exceeded = false;
 
   void run(std::vector<Item> work, PortSet ports) {
+    if (exceeded) return;
     if (work.empty()) {
-      if (ports != 0) out.push_back(ports);
+      if (ports == 0) return;
+      if (out.size() == limit) {
+        exceeded = true;
+        return;
+      }
+      out.push_back(ports);
       return;
     }
     Item item = work.back();
@@ -168,12 +176,14 @@ bool side_ports(const System& system, const bipc::ir::PatternSide& side, PortSet
 
 }  // namespace
 
-std::vector<PortSet> defined_interactions(const std::vector<DefineNode>& define) {
+std::optional<std::vector<PortSet>> defined_interactions(const std::vector<DefineNode>& define,
+                                                         std::size_t limit) {
   std::vector<PortSet> out;
   DefineNode root;
   root.children = define;
-  Enumerator enumerator{out};
+  Enumerator enumerator{out, limit};
   enumerator.run({{&root, true, false, false, false}}, 0);
+  if (enumerator.exceeded) return std::nullopt;
   return out;
 }
 
@@ -203,7 +213,13 @@ std::string build_layout(const System& system, Layout& layout) {
     layout.connector_data.push_back(layout.data_size);
     layout.data_size += type.data.size();
     std::vector<DefinedInteraction> defined;
-    for (PortSet ports : defined_interactions(type.define)) {
+    const std::optional<std::vector<PortSet>> sets = defined_interactions(type.define);
+    if (!sets) {
+      return "connector '" + connector.path + "' defines more than " +
+             std::to_string(kMaxDefinedInteractions) +
+             " interactions; the engines enumerate them all and do not support that many";
+    }
+    for (PortSet ports : *sets) {
       DefinedInteraction d{ports, -1};
       for (std::size_t i = 0; i < type.interactions.size(); ++i) {
         PortSet on = 0;

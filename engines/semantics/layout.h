@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,11 @@ std::string build_layout(const bipc::ir::System& system, Layout& layout);
 
 /// The interactions a define expression allows, in the reference engine's order: the tree's
 /// presence variables are enumerated depth first, 1 before 0.
-std::vector<PortSet> defined_interactions(const std::vector<bipc::ir::DefineNode>& define);
+/// At most this many per connector (a broadcast over 20 ports defines 2^19 of them).
+inline constexpr std::size_t kMaxDefinedInteractions = std::size_t{1} << 20;
+
+/// nullopt when there are more than `limit`.
+std::optional<std::vector<PortSet>> defined_interactions(
+    const std::vector<bipc::ir::DefineNode>& define, std::size_t limit = kMaxDefinedInteractions);
 
 }  // namespace smcbip::engines
