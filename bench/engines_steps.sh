@@ -4,8 +4,9 @@
 # Usage: bench/engines_steps.sh [BUILD_DIR]   (default: build)
 # Runs `smcbip simulate --silent --limit K` on generated rendezvous and broadcast models of 10 to
 # 10,000 atoms, on the work family (100 atoms, WORK assignments per transition) and on
-# models/channel.bip, and prints steps per second from the wall time (process start and model
-# loading included, hence K chosen for runs of about a second), each engine also as a ratio
+# models/channel.bip, and prints steps per second from the wall time (minus that of a 1-step run,
+# which is process start and model loading; K chosen for runs of about a second), each engine
+# also as a ratio
 # against the reference engine in the same invocation, beside the targets. It reports only:
 # timings on a shared machine are noisy (the load average is printed), so it never fails on them.
 set -euo pipefail
@@ -62,8 +63,8 @@ choose_limit() {
     printf "%d\n", k }'
 }
 
-# Best steps per second over `runs` runs.
-steps_per_second() {
+# Best wall seconds of `runs` runs with $3 steps.
+best_seconds() {
   local model=$1 root=$2 limit=$3 best="" seconds r
   shift 3
   for ((r = 0; r < runs; r++)); do
@@ -72,7 +73,19 @@ steps_per_second() {
       best=$seconds
     fi
   done
-  awk -v k="$limit" -v s="$best" 'BEGIN { printf "%.0f\n", (s > 0 ? k / s : 0) }'
+  echo "$best"
+}
+
+# Steps per second of the simulation itself: the best run's time minus the best time of a
+# 1-step run with the same engine (process start and model loading), so that loading a large
+# model does not hide the speed of its steps.
+steps_per_second() {
+  local model=$1 root=$2 limit=$3 full start_up
+  shift 3
+  full=$(best_seconds "$model" "$root" "$limit" "$@") || return 1
+  start_up=$(best_seconds "$model" "$root" 1 "$@") || return 1
+  awk -v k="$limit" -v s="$full" -v a="$start_up" \
+    'BEGIN { d = s - a; printf "%.0f\n", (d > 0 ? (k - 1) / d : 0) }'
 }
 
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }

@@ -393,7 +393,10 @@ Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& fram
   // Without clocks a guard holds at all dates or at none: no need for time sets.
   if (frame.clocks == nullptr) return holds(code, frame) ? Interval::all() : Interval::none();
   using Kind = TimedItem::Kind;
-  std::vector<TimedItem> stack;
+  // Kept per thread between calls so that a guard's evaluation does not allocate (this runs
+  // for every enabled transition of every fired atom); holds_when never re-enters itself.
+  thread_local std::vector<TimedItem> stack;
+  stack.clear();
   // A `&&`/`||` whose left side depends on time cannot short-circuit: remember it and combine
   // both sides where the jump would have landed.
   struct Pending {
@@ -401,7 +404,8 @@ Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& fram
     bool conjunction;
     Interval left;
   };
-  std::vector<Pending> pending;
+  thread_local std::vector<Pending> pending;
+  pending.clear();
   auto as_set = [](const TimedItem& item) {
     return item.kind == Kind::Set ? item.set : relative_set(item.value.b);
   };
