@@ -12,6 +12,7 @@
 
 #include "bipc/bipc.h"
 #include "engines/engines.h"
+#include "tests/engines/temp_model.h"
 #include "tests/engines/trace_oracles.h"
 
 namespace smcbip::tests {
@@ -99,17 +100,8 @@ end
 }
 
 engines::RunResult run_policy(const std::string& policy, std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("smcbip_extern_" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
-  const auto file = dir / "policies.bip";
-  std::ofstream(file) << policy_model(policy);
-  bipc::FrontendResult loaded = bipc::run_frontend({file.string(), {}, "Top()"}, true);
-  std::filesystem::remove_all(dir);
-  if (!loaded.system) {
-    ADD_FAILURE() << loaded.diags.format(loaded.model.files);
-    return {};
-  }
+  const std::optional<bipc::ir::System> system = load_model_text(policy_model(policy), "Top()");
+  if (!system) return {};
   engines::Externs externs = engines::Externs::with_builtins();
   externs.add_port_class("ThreeEvents", [](const std::string&, const std::string&) {
     return std::make_unique<ThreeEvents>();
@@ -117,7 +109,7 @@ engines::RunResult run_policy(const std::string& policy, std::string& text) {
   std::ostringstream out;
   engines::SimulateOptions options = simulated(1);
   options.asap = true;  // each event is taken at the first date its port allows
-  const engines::RunResult result = engines::simulate(*loaded.system, options, externs, out);
+  const engines::RunResult result = engines::simulate(*system, options, externs, out);
   text = out.str();
   return result;
 }
@@ -153,18 +145,11 @@ TEST(ExternPolicies, ErrorStopsAtTheFirstEventThePortCannotTake) {
 }
 
 TEST(ExternPolicies, AMissingPortClassIsAnInputError) {
-  std::string text;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("smcbip_extern_missing_" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "policies.bip") << policy_model("remember");
-  bipc::FrontendResult loaded =
-      bipc::run_frontend({(dir / "policies.bip").string(), {}, "Top()"}, true);
-  std::filesystem::remove_all(dir);
-  ASSERT_TRUE(loaded.system);
+  const std::optional<bipc::ir::System> system = load_model_text(policy_model("remember"), "Top()");
+  ASSERT_TRUE(system);
   std::ostringstream out;
   const engines::RunResult result =
-      engines::simulate(*loaded.system, simulated(1), engines::Externs::with_builtins(), out);
+      engines::simulate(*system, simulated(1), engines::Externs::with_builtins(), out);
   EXPECT_EQ(result.code, engines::kInputError);
   EXPECT_NE(result.message.find("no extern port class \"ThreeEvents\""), std::string::npos)
       << result.message;

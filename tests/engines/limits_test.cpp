@@ -10,6 +10,7 @@
 
 #include "bipc/bipc.h"
 #include "engines/engines.h"
+#include "tests/engines/temp_model.h"
 
 namespace smcbip::engines {
 namespace {
@@ -31,22 +32,15 @@ std::string broadcast_model(int receivers) {
 }
 
 RunResult run_broadcast(int receivers) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("smcbip_limits_" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "wide.bip") << broadcast_model(receivers);
-  bipc::FrontendResult loaded = bipc::run_frontend({(dir / "wide.bip").string(), {}, "Top()"}, true);
-  std::filesystem::remove_all(dir);
-  if (!loaded.system) {
-    ADD_FAILURE() << loaded.diags.format(loaded.model.files);
-    return {};
-  }
+  const std::optional<bipc::ir::System> system =
+      tests::load_model_text(broadcast_model(receivers), "Top()");
+  if (!system) return {};
   SimulateOptions options;
   options.seed = 1;
   options.limit = 2;
   options.silent = true;
   std::ostringstream out;
-  return simulate(*loaded.system, options, Externs::with_builtins(), out);
+  return simulate(*system, options, Externs::with_builtins(), out);
 }
 
 TEST(EngineLimits, ABroadcastOfTwelveRuns) {

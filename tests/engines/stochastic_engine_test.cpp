@@ -22,6 +22,7 @@
 #include "bipc/bipc.h"
 #include "engines/engines.h"
 #include "kolmogorov.h"
+#include "temp_model.h"
 
 namespace smcbip::engines {
 namespace {
@@ -31,32 +32,11 @@ namespace fs = std::filesystem;
 constexpr std::size_t kRuns = 10000;
 constexpr std::uint64_t kSeed = 20261121;
 
-/// A temporary folder for generated models, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("smcbip_stochastic_engine_" + std::to_string(std::random_device{}()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path file = path_ / name;
-    std::ofstream(file) << text;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
+using tests::TempDir;
 
 bipc::ir::System load(const fs::path& file, const std::string& root) {
-  bipc::FrontendResult result = bipc::run_frontend({file.string(), {}, root}, true);
-  if (!result.system) {
-    ADD_FAILURE() << result.diags.format(result.model.files);
-    return {};
-  }
-  return std::move(*result.system);
+  std::optional<bipc::ir::System> system = tests::load_model(file, root);
+  return system ? std::move(*system) : bipc::ir::System{};
 }
 
 /// One atom whose port `fire` draws from `dist(params)` on clock x, after an eager internal
