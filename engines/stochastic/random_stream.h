@@ -7,13 +7,24 @@
 
 namespace smcbip::engines {
 
+// 2^64 / golden ratio, rounded to odd: SplitMix64's Weyl increment.
+inline constexpr std::uint64_t kStreamGamma = 0x9E3779B97F4A7C15u;
+
+// SplitMix64's finaliser (Stafford's "Mix13" variant of MurmurHash3's fmix64): a bijection of
+// 64-bit words with full avalanche.
+constexpr std::uint64_t stream_mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+  return z ^ (z >> 31);
+}
+
 /// The random numbers of one run. The i-th draw is a pure function of (seed, run_index, i):
 /// creating a stream costs O(1) whatever the run index, streams share no state, and a stream may
 /// be copied to replay its future draws. Satisfies std::uniform_random_bit_generator.
 ///
 /// Construction: the 128-bit key (k0, k1) is derived from (seed, run_index) by the SplitMix64
 /// finaliser (Steele, Lea, Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014).
-/// The i-th output is mix(mix(k0 + (i+1)·γ) ⊕ k1), γ the golden-ratio odd constant: the inner
+/// The i-th output is stream_mix(stream_mix(k0 + (i+1)·γ) ⊕ k1), γ the golden-ratio odd constant: the inner
 /// part is SplitMix64 started at k0; the outer keyed mix makes two runs whose Weyl sequences
 /// happen to overlap still produce unrelated outputs (a counter-based design after Salmon et al.,
 /// "Parallel random numbers: as easy as 1, 2, 3", SC 2011).
@@ -24,12 +35,23 @@ class RandomStream {
   /// The stream of run `run_index` under `seed`; equal arguments give equal streams.
   RandomStream(std::uint64_t seed, std::uint64_t run_index);
 
-  /// The next 64 uniformly distributed bits.
-  std::uint64_t next_u64();
+  /// The next 64 uniformly distributed bits. Inline: the draws of consecutive items do not
+  /// depend on each other, so the processor can overlap them.
+  std::uint64_t next_u64() {
+    ++counter_;
+    return stream_mix(stream_mix(key0_ + counter_ * kStreamGamma) ^ key1_);
+  }
 
   /// A uniform double k·2^-53 with k uniform in [1, 2^53 - 1]: never 0 or 1, so it can be fed
   /// to inverse CDFs and logarithms. Uses one draw except with probability 2^-53.
-  double uniform01_open();
+  double uniform01_open() {
+    constexpr double kUlp = 1.0 / 9007199254740992.0;  // 2^-53
+    for (;;) {
+      // The top 53 bits; k = 0 is redrawn, and k·2^-53 <= 1 - 2^-53 is exact, so never 0 or 1.
+      const std::uint64_t k = next_u64() >> 11;
+      if (k != 0) return static_cast<double>(k) * kUlp;
+    }
+  }
 
   /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
   /// as OpenBSD's arc4random_uniform). n must be positive; n == 0 aborts.
