@@ -5,7 +5,7 @@ PRESET ?= $(if $(filter true,$(CI)),ci,default)
 BUILD_DIR := build
 FUZZ_SECONDS ?= 600
 ROOT := 'RoverSystem()'
-FORMAT_DIRS := bipc tests bench
+FORMAT_DIRS := bipc engines tests bench
 
 .PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines format clean
 

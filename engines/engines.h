@@ -22,7 +22,7 @@ enum class TraceFormat : std::uint8_t { Text, Jsonl };
 /// Run codes of the reference engine (`smcbip simulate` exits with them), plus sysexits codes
 /// for the tool's own usage and input errors, so that the two never collide.
 enum RunCode : int {
-  kRunOk = 0,                  // normal end: deadlock, time-lock, limit
+  kRunOk = 0,  // normal end: deadlock, time-lock, limit
   kNonDeterministicNet = 1,
   kNonOneSafeNet = 2,
   kCycleInPriorities = 3,
@@ -30,19 +30,19 @@ enum RunCode : int {
   kInvariantViolation = 5,
   kUnexpectedEvent = 6,
   kTimeSafetyViolation = 7,
-  kUsageError = 64,            // EX_USAGE
-  kInputError = 65,            // EX_DATAERR
-  kInternalError = 70,         // EX_SOFTWARE
+  kUsageError = 64,     // EX_USAGE
+  kInputError = 65,     // EX_DATAERR
+  kInternalError = 70,  // EX_SOFTWARE
 };
 
 /// Options of one simulation, as `smcbip simulate` takes them.
 struct SimulateOptions {
   EngineKind engine = EngineKind::Reference;
-  unsigned threads = 0;  // multithread engine; 0: all cores
+  unsigned threads = 0;                  // multithread engine; 0: all cores
   std::size_t parallel_min_work = 1000;  // multithread engine: see RuntimeOptions
-  std::optional<std::uint64_t> seed;  // none: drawn from the platform's entropy
-  std::uint64_t run_index = 0;        // with the seed, selects the run's random stream
-  std::optional<std::uint64_t> limit;  // stop after this many steps
+  std::optional<std::uint64_t> seed;     // none: drawn from the platform's entropy
+  std::uint64_t run_index = 0;           // with the seed, selects the run's random stream
+  std::optional<std::uint64_t> limit;    // stop after this many steps
   bool real_time = false;
   bool asap = false;
   bool first_enabled = false;
@@ -78,8 +78,7 @@ struct RunStreams {
 /// change between runs. One simulator per thread.
 class Simulator {
  public:
-  Simulator(const bipc::ir::System& system, const SimulateOptions& options,
-            const Externs& externs);
+  Simulator(const bipc::ir::System& system, const SimulateOptions& options, const Externs& externs);
   ~Simulator();
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;

@@ -85,8 +85,8 @@ std::unordered_set<std::string> reachable_state_keys(Runtime& runtime, std::uint
 void write_exploration(std::ostream& out, const ExplorationCounts& counts) {
   out << kEnginePrefix << "computing reachable states:... found "
       << plural(counts.states, "reachable state") << ", " << plural(counts.deadlocks, "deadlock")
-      << ", " << plural(counts.timelocks, "timelock") << ", and "
-      << plural(counts.errors, "error") << " in " << plural(counts.error_states, "state") << "\n";
+      << ", " << plural(counts.timelocks, "timelock") << ", and " << plural(counts.errors, "error")
+      << " in " << plural(counts.error_states, "state") << "\n";
 }
 
 }  // namespace smcbip::engines

@@ -28,8 +28,8 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
       continue;
     }
     std::size_t end = i + 1;
-    while (end < format.size() && std::string_view("-+ #0123456789.hlLqjzt").find(format[end]) !=
-                                      std::string_view::npos) {
+    while (end < format.size() &&
+           std::string_view("-+ #0123456789.hlLqjzt").find(format[end]) != std::string_view::npos) {
       ++end;
     }
     if (end >= format.size()) {
@@ -43,7 +43,8 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
       continue;
     }
     std::string spec = format.substr(i, end - i);
-    while (!spec.empty() && std::string_view("hlLqjzt").find(spec.back()) != std::string_view::npos) {
+    while (!spec.empty() &&
+           std::string_view("hlLqjzt").find(spec.back()) != std::string_view::npos) {
       spec.pop_back();
     }
     if (next >= args.size()) {
@@ -62,16 +63,15 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
       std::snprintf(buffer, sizeof buffer, (spec + conversion).c_str(), value);
     } else if (conversion == 's') {
       const std::string text = kind == ValueKind::String ? context.strings.text(arg.s)
-                               : kind == ValueKind::Bool  ? (arg.b ? "true" : "false")
-                                                          : std::to_string(arg.i);
+                               : kind == ValueKind::Bool ? (arg.b ? "true" : "false")
+                                                         : std::to_string(arg.i);
       std::snprintf(buffer, sizeof buffer, (spec + 's').c_str(), text.c_str());
     } else if (conversion == 'c') {
       std::snprintf(buffer, sizeof buffer, (spec + 'c').c_str(), static_cast<int>(arg.i));
     } else {
-      const long long value =
-          kind == ValueKind::Float ? static_cast<long long>(arg.f)
-          : kind == ValueKind::Bool ? (arg.b ? 1 : 0)
-                                    : static_cast<long long>(arg.i);
+      const long long value = kind == ValueKind::Float  ? static_cast<long long>(arg.f)
+                              : kind == ValueKind::Bool ? (arg.b ? 1 : 0)
+                                                        : static_cast<long long>(arg.i);
       std::snprintf(buffer, sizeof buffer, (spec + "ll" + conversion).c_str(), value);
     }
     out += buffer;

@@ -59,28 +59,45 @@ namespace detail {
 template <class T>
 constexpr ValueKind kind_of() {
   using U = std::remove_cvref_t<T>;
-  if constexpr (std::is_same_v<U, void>) return ValueKind::Void;
-  else if constexpr (std::is_same_v<U, bool>) return ValueKind::Bool;
-  else if constexpr (std::is_integral_v<U>) return ValueKind::Int;
-  else if constexpr (std::is_floating_point_v<U>) return ValueKind::Float;
-  else if constexpr (std::is_same_v<U, std::string>) return ValueKind::String;
-  else static_assert(sizeof(U) == 0, "extern parameters are bool, integers, floats or strings");
+  if constexpr (std::is_same_v<U, void>)
+    return ValueKind::Void;
+  else if constexpr (std::is_same_v<U, bool>)
+    return ValueKind::Bool;
+  else if constexpr (std::is_integral_v<U>)
+    return ValueKind::Int;
+  else if constexpr (std::is_floating_point_v<U>)
+    return ValueKind::Float;
+  else if constexpr (std::is_same_v<U, std::string>)
+    return ValueKind::String;
+  else
+    static_assert(sizeof(U) == 0, "extern parameters are bool, integers, floats or strings");
 }
 template <class T>
 T from_val(const CallContext& context, Val v) {
   using U = std::remove_cvref_t<T>;
-  if constexpr (std::is_same_v<U, bool>) return v.b;
-  else if constexpr (std::is_integral_v<U>) return static_cast<U>(v.i);
-  else if constexpr (std::is_floating_point_v<U>) return static_cast<U>(v.f);
-  else return context.strings.text(v.s);
+  if constexpr (std::is_same_v<U, bool>)
+    return v.b;
+  else if constexpr (std::is_integral_v<U>)
+    return static_cast<U>(v.i);
+  else if constexpr (std::is_floating_point_v<U>)
+    return static_cast<U>(v.f);
+  else
+    return context.strings.text(v.s);
 }
 template <class T>
 Val to_val(CallContext& context, T&& value) {
   using U = std::remove_cvref_t<T>;
-  if constexpr (std::is_same_v<U, bool>) return make_bool(value);
-  else if constexpr (std::is_integral_v<U>) return make_int(static_cast<std::int64_t>(value));
-  else if constexpr (std::is_floating_point_v<U>) return make_float(static_cast<double>(value));
-  else { Val x; x.s = context.strings.intern(value); return x; }
+  if constexpr (std::is_same_v<U, bool>)
+    return make_bool(value);
+  else if constexpr (std::is_integral_v<U>)
+    return make_int(static_cast<std::int64_t>(value));
+  else if constexpr (std::is_floating_point_v<U>)
+    return make_float(static_cast<double>(value));
+  else {
+    Val x;
+    x.s = context.strings.intern(value);
+    return x;
+  }
 }
 }  // namespace detail
 
@@ -94,8 +111,7 @@ class Externs {
 
   void add_raw(std::string name, std::vector<ValueKind> params, ValueKind result, ExternFn fn);
   /// A C-style variadic function: `params` are the fixed leading ones; any arguments may follow.
-  void add_variadic(std::string name, std::vector<ValueKind> params, ValueKind result,
-                    ExternFn fn);
+  void add_variadic(std::string name, std::vector<ValueKind> params, ValueKind result, ExternFn fn);
 
   /// Registers a C++ callable; its parameters and result map to BIP kinds (bool, integers,
   /// floats, std::string). An optional first parameter `CallContext&` gives access to the output.
@@ -108,8 +124,7 @@ class Externs {
   }
   template <class R, class... A>
   void add(std::string name, std::function<R(A...)> fn) {
-    add<R, A...>(std::move(name),
-                 std::function<R(CallContext&, A...)>([fn](CallContext&, A... a) {
+    add<R, A...>(std::move(name), std::function<R(CallContext&, A...)>([fn](CallContext&, A... a) {
                    return fn(std::forward<A>(a)...);
                  }));
   }

@@ -28,7 +28,8 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag("-a,--asap", options.asap, "plan each item at its earliest date");
   app.add_flag("-f,--first-enabled", options.first_enabled,
                "choose among the items that can run first");
-  app.add_flag("--relaxed", options.relaxed, "real time: report missed deadlines as warnings and go on");
+  app.add_flag("--relaxed", options.relaxed,
+               "real time: report missed deadlines as warnings and go on");
   app.add_flag("--disable-maximal-progress", options.disable_maximal_progress,
                "do not restrict connectors to their maximal interactions");
   app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
@@ -46,10 +47,10 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
          "stochastic mode: mean delay (ms) of items with no deadline (default 1)")
       ->check(CLI::PositiveNumber);
   app.add_option("--trace", options.trace, "trace format")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
-                                             {"jsonl", TraceFormat::Jsonl}},
-          CLI::ignore_case));
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
+                                                                     {"jsonl", TraceFormat::Jsonl}},
+                                  CLI::ignore_case));
 }
 
 }  // namespace smcbip::engines

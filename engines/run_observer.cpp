@@ -21,9 +21,7 @@ double StateView::clock(bipc::ir::Index atom, bipc::ir::Index clock) const {
   return CodeEvaluator::clock_value(state_.clocks[slot], layout_.clock_units[slot], state_.now);
 }
 
-std::string_view StateView::text(Val v) const {
-  return strings_.text(v.s);
-}
+std::string_view StateView::text(Val v) const { return strings_.text(v.s); }
 
 const std::string& StateView::atom_name(bipc::ir::Index atom) const {
   return layout_.atom_names[atom];

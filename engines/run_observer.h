@@ -45,11 +45,15 @@ class StateView {
 
 /// The step that led to a state: the initial state is step 0 and fired nothing.
 struct StepInfo {
-  enum class Fired : std::uint8_t { Nothing, Interaction, Internal, External } fired =
-      Fired::Nothing;
+  enum class Fired : std::uint8_t {
+    Nothing,
+    Interaction,
+    Internal,
+    External
+  } fired = Fired::Nothing;
   std::uint64_t step = 0;
   TimeValue time = 0;
-  bipc::ir::Index connector = bipc::ir::kNone;     // Interaction
+  bipc::ir::Index connector = bipc::ir::kNone;                     // Interaction
   bipc::ir::Index atom = bipc::ir::kNone, port = bipc::ir::kNone;  // Internal, External
 };
 

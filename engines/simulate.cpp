@@ -25,7 +25,8 @@ TimeValue random_date(const Interval& interval, RandomStream& random) {
   if (interval.bounded()) {
     const TimeValue last = interval.last();
     if (last <= first) return first;
-    return first + static_cast<TimeValue>(random.below(static_cast<std::uint64_t>(last - first) + 1));
+    return first +
+           static_cast<TimeValue>(random.below(static_cast<std::uint64_t>(last - first) + 1));
   }
   return first + static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
 }
@@ -68,7 +69,8 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
   r.maximal_progress = !options.disable_maximal_progress;
   r.incremental = options.engine != EngineKind::Reference;
   if (options.engine == EngineKind::Multithread) {
-    r.threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    r.threads =
+        options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
     r.parallel_min_work = options.parallel_min_work;
   }
   return r;
@@ -278,7 +280,8 @@ class Simulation {
   std::optional<std::pair<std::size_t, TimeValue>> choose() {
     if (options_.interactive) {
       if (verbose_) write_state(out_, runtime_, steps_);
-      const std::optional<std::size_t> picked = prompt_choice(out_, input_, runtime_.items().size());
+      const std::optional<std::size_t> picked =
+          prompt_choice(out_, input_, runtime_.items().size());
       if (!picked) {
         stopped();
         return std::nullopt;
@@ -362,8 +365,8 @@ class Simulation {
   }
 
   TimeValue platform_now() const {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::steady_clock::now() - start_)
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() -
+                                                                start_)
         .count();
   }
 

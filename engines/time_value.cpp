@@ -31,12 +31,17 @@ std::string format_time(TimeValue t) {
   if (t == 0) return "0";
   std::string text = t < 0 ? "-" : "";
   // Magnitude as unsigned: -t overflows for the smallest value, which is -INFTY anyway.
-  std::uint64_t rest = t < 0 ? static_cast<std::uint64_t>(-(t + 1)) + 1 : static_cast<std::uint64_t>(t);
+  std::uint64_t rest =
+      t < 0 ? static_cast<std::uint64_t>(-(t + 1)) + 1 : static_cast<std::uint64_t>(t);
   static constexpr struct {
     std::uint64_t ns;
     const char* unit;
-  } kParts[] = {{86'400'000'000'000, "day"}, {3'600'000'000'000, "hr"}, {60'000'000'000, "min"},
-                {1'000'000'000, "s"},        {1'000'000, "ms"},         {1'000, "us"},
+  } kParts[] = {{86'400'000'000'000, "day"},
+                {3'600'000'000'000, "hr"},
+                {60'000'000'000, "min"},
+                {1'000'000'000, "s"},
+                {1'000'000, "ms"},
+                {1'000, "us"},
                 {1, "ns"}};
   for (const auto& part : kParts) {
     const std::uint64_t count = rest / part.ns;

@@ -21,9 +21,22 @@ union Val {
 };
 static_assert(sizeof(Val) == 8);
 
-inline Val make_bool(bool v) { Val x; x.i = 0; x.b = v; return x; }
-inline Val make_int(std::int64_t v) { Val x; x.i = v; return x; }
-inline Val make_float(double v) { Val x; x.f = v; return x; }
+inline Val make_bool(bool v) {
+  Val x;
+  x.i = 0;
+  x.b = v;
+  return x;
+}
+inline Val make_int(std::int64_t v) {
+  Val x;
+  x.i = v;
+  return x;
+}
+inline Val make_float(double v) {
+  Val x;
+  x.f = v;
+  return x;
+}
 
 /// Interned strings, shared by every run of a model: ids are stable, lookups are thread-safe,
 /// and equal strings get equal ids (so string equality is id equality).

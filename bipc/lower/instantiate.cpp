@@ -187,7 +187,8 @@ class Instantiator {
       connector.parent = scope.compound;
       connector.bound.resize(decl.ports.size());
       connector.bound_through_compound.resize(decl.ports.size(), false);
-      for (const ast::QualifiedName& port : decl.ports) connector.bound_names.push_back(port.text());
+      for (const ast::QualifiedName& port : decl.ports)
+        connector.bound_names.push_back(port.text());
       connector.annotations = lower_annotations(decl.annotations);
       const auto index = static_cast<ir::Index>(system_.connectors.size());
       system_.connectors.push_back(std::move(connector));
@@ -206,9 +207,8 @@ class Instantiator {
         for (const ir::PortRef& ref : refs) {
           if (ref.kind == ir::PortRef::Kind::Connector) bind_export(ref.instance, k, decl.ports[i]);
         }
-        auto member = decl.ports[i].parts.empty()
-                          ? scope.members.end()
-                          : scope.members.find(decl.ports[i].parts[0].text);
+        auto member = decl.ports[i].parts.empty() ? scope.members.end()
+                                                  : scope.members.find(decl.ports[i].parts[0].text);
         system_.connectors[k].bound_through_compound[i] =
             member != scope.members.end() && !member->second.is_connector &&
             !scope.children[member->second.index].is_atom;

@@ -220,7 +220,8 @@ std::string bind_functions(const bipc::ir::System& system, const Externs& extern
   out.port_classes.clear();
   for (const bipc::ir::AtomType& type : system.atom_types) {
     for (const bipc::ir::Port& port : type.ports) {
-      if (port.is_extern) out.port_classes[port.backend_name] = externs.find_port_class(port.backend_name);
+      if (port.is_extern)
+        out.port_classes[port.backend_name] = externs.find_port_class(port.backend_name);
     }
   }
   return {};

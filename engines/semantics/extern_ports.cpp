@@ -83,11 +83,10 @@ bool Runtime::receive_unexpected_events(TimeValue upto) {
     }
     const std::string& atom = layout_.atom_names[e.atom];
     if (e.head->time < state_.now) {
-      return fail(kUnexpectedEvent, "port " + port.name + " of component " + atom +
-                                        " has received an outdated event at " +
-                                        format_time(e.head->time) +
-                                        " while current engine time is already " +
-                                        format_time(state_.now) + "!");
+      return fail(kUnexpectedEvent,
+                  "port " + port.name + " of component " + atom +
+                      " has received an outdated event at " + format_time(e.head->time) +
+                      " while current engine time is already " + format_time(state_.now) + "!");
     }
     state_.now = e.head->time;
     return fail(kUnexpectedEvent, "port " + port.name + " of component " + atom +

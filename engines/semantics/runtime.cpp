@@ -245,8 +245,8 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
     }
     if (!holds) {
       return s.fail(5, "the invariant " + inv.name + " of component " +
-                         bipc::ir::last_component(system_.atoms[atom].path) +
-                         " has been violated!");
+                           bipc::ir::last_component(system_.atoms[atom].path) +
+                           " has been violated!");
     }
   }
   return true;
@@ -261,10 +261,11 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
   for (Index p : t.to) {
     if (state_.marking[base + p]) {
       const bool labelled = label != kNone && !type.ports[label].is_extern;
-      return s.fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
-                         (labelled ? "executing a transition labelled by " + type.ports[label].name
-                                   : std::string("executing an internal transition")) +
-                         ")");
+      return s.fail(2,
+                    "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
+                        (labelled ? "executing a transition labelled by " + type.ports[label].name
+                                  : std::string("executing an internal transition")) +
+                        ")");
     }
     state_.marking[base + p] = 1;
   }
@@ -290,7 +291,7 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
       if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
       if (enabled != kNone) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
-                           layout_.atom_names[atom] + "!");
+                             layout_.atom_names[atom] + "!");
       }
       enabled = t;
     }
@@ -317,10 +318,10 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
-                           layout_.atom_names[atom] + "!");
+                             layout_.atom_names[atom] + "!");
       }
       return s.fail(1, "non-deterministic choice between transitions labelled by " +
-                         type.ports[tr.port].name + " in " + layout_.atom_names[atom] + "!");
+                           type.ports[tr.port].name + " in " + layout_.atom_names[atom] + "!");
     }
     values[tr.port] = AtomPortValue{t, {when, tr.urgency}};
   }

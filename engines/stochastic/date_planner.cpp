@@ -137,7 +137,8 @@ TimeValue DatePlanner::draw_timed(bipc::Urgency urgency, const Interval& window)
   if (window.bounded()) {
     const TimeValue last = window.last();
     if (last <= first) return first;
-    return first + static_cast<TimeValue>(random_.below(static_cast<std::uint64_t>(last - first) + 1));
+    return first +
+           static_cast<TimeValue>(random_.below(static_cast<std::uint64_t>(last - first) + 1));
   }
   const double delay = -static_cast<double>(unbounded_mean_) * std::log(random_.uniform01_open());
   return after(first, std::floor(delay));

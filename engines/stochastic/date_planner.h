@@ -5,8 +5,8 @@
 // constraint changed.
 #pragma once
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <span>
 #include <string>
@@ -82,7 +82,8 @@ class DatePlanner {
   TimeValue unbounded_mean_;
   const CustomDistributions& custom_;
   Plans plans_;
-  std::uint64_t generation_ = 1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
+  std::uint64_t generation_ =
+      1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
   Key key_;
   std::vector<std::pair<Index, Index>> ports_;
 };

@@ -24,10 +24,10 @@ constexpr std::uint64_t stream_mix(std::uint64_t z) {
 ///
 /// Construction: the 128-bit key (k0, k1) is derived from (seed, run_index) by the SplitMix64
 /// finaliser (Steele, Lea, Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014).
-/// The i-th output is stream_mix(stream_mix(k0 + (i+1)·γ) ⊕ k1), γ the golden-ratio odd constant: the inner
-/// part is SplitMix64 started at k0; the outer keyed mix makes two runs whose Weyl sequences
-/// happen to overlap still produce unrelated outputs (a counter-based design after Salmon et al.,
-/// "Parallel random numbers: as easy as 1, 2, 3", SC 2011).
+/// The i-th output is stream_mix(stream_mix(k0 + (i+1)·γ) ⊕ k1), γ the golden-ratio odd constant:
+/// the inner part is SplitMix64 started at k0; the outer keyed mix makes two runs whose Weyl
+/// sequences happen to overlap still produce unrelated outputs (a counter-based design after Salmon
+/// et al., "Parallel random numbers: as easy as 1, 2, 3", SC 2011).
 class RandomStream {
  public:
   using result_type = std::uint64_t;

@@ -71,7 +71,8 @@ bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
     }
     places[name] = std::move(marked);
     for (bipc::ir::Index d = 0; d < type.data.size(); ++d) {
-      data[name + "." + type.data[d].name] = value_json(state, state.data(a, d), type.data[d].type.kind);
+      data[name + "." + type.data[d].name] =
+          value_json(state, state.data(a, d), type.data[d].type.kind);
     }
     for (bipc::ir::Index c = 0; c < type.clocks.size(); ++c) {
       data[name + "." + type.clocks[c].name] = state.clock(a, c);

@@ -12,8 +12,7 @@ namespace smcbip::engines {
 inline constexpr const char* kEnginePrefix = "[BIP ENGINE]: ";
 
 /// `<k> interaction[s] and <m> internal port[s] and <e> external port[s]:`
-std::string enabled_summary(std::size_t interactions, std::size_t internals,
-                            std::size_t externals);
+std::string enabled_summary(std::size_t interactions, std::size_t internals, std::size_t externals);
 
 /// The listing entry of an item (without index): `ROOT.c: a.p() b.q() [ 0, +INFTY ]`.
 std::string item_text(const Runtime& runtime, const Item& item, bool with_interval);

@@ -59,9 +59,10 @@ TEST_F(ExternConformance, AnEventForADisabledErrorPortStopsTheRun) {
   ASSERT_TRUE(system);
   const ConformanceRun run = run_conformance(*system, simulated(1));
   expect_run_error(run, engines::kUnexpectedEvent);
-  EXPECT_TRUE(has(run.lines, "ERROR: port p1 of component ROOT\\.[AB] has received an event at "
-                             ".* while being disabled at current state and having event "
-                             "consumption policy 'error'!"))
+  EXPECT_TRUE(has(run.lines,
+                  "ERROR: port p1 of component ROOT\\.[AB] has received an event at "
+                  ".* while being disabled at current state and having event "
+                  "consumption policy 'error'!"))
       << run.text;
   EXPECT_EQ(count(run.lines, "s3=42"), 0u);
 }
@@ -87,7 +88,8 @@ std::string policy_model(const std::string& policy) {
   atom type A()
     data int v, sum
     clock t unit millisecond
-    extern port Int e(v) as "ThreeEvents" )" + policy + R"(
+    extern port Int e(v) as "ThreeEvents" )" +
+         policy + R"(
     place S
     initial to S do { v = 0; sum = 0; t = 0; }
     on e from S to S provided (t >= 15) do { sum = sum + v; printf("sum=%d\n", sum); }
@@ -139,8 +141,9 @@ TEST(ExternPolicies, ErrorStopsAtTheFirstEventThePortCannotTake) {
   std::string text;
   const engines::RunResult result = run_policy("error", text);
   EXPECT_EQ(result.code, engines::kUnexpectedEvent);
-  EXPECT_TRUE(has(split_lines(text), "ERROR: port e of component ROOT.a has received an event at "
-                                     "10ms while being disabled"))
+  EXPECT_TRUE(has(split_lines(text),
+                  "ERROR: port e of component ROOT.a has received an event at "
+                  "10ms while being disabled"))
       << text;
 }
 

@@ -25,8 +25,8 @@ engines::RunResult run_with_answers(const std::string& answers, std::string& tex
   options.interactive = true;
   std::istringstream input(answers);
   std::ostringstream out;
-  const engines::RunResult result =
-      engines::simulate(rendezvous_model(), options, engines::Externs::with_builtins(), out, &input);
+  const engines::RunResult result = engines::simulate(
+      rendezvous_model(), options, engines::Externs::with_builtins(), out, &input);
   text = out.str();
   return result;
 }

@@ -49,12 +49,14 @@ std::string single_port_model(const std::string& dist, const std::string& params
   end
   atom type A()
     clock x unit millisecond
-    @stochastic(dist=")" + dist + R"(", clk=x, param=")" + params + R"(")
+    @stochastic(dist=")" +
+         dist + R"(", clk=x, param=")" + params + R"(")
     export port P fire()
     port P wait()
     place S0, S1, S2
     initial to S0 do { x = 0; }
-    on wait from S0 to S1 provided (x == )" + std::to_string(wait) + R"() eager
+    on wait from S0 to S1 provided (x == )" +
+         std::to_string(wait) + R"() eager
     on fire from S1 to S2
   end
   compound type Top()
@@ -114,15 +116,15 @@ std::vector<DateCase> date_cases() {
       {"lognormal", "lognormal", "1,0.5", [](double x) { return gsl_cdf_lognormal_P(x, 1, 0.5); },
        0},
       {"weibull", "weibull", "2,1.5", [](double x) { return gsl_cdf_weibull_P(x, 2, 1.5); }, 0},
-      {"normal_truncated", "normal", "10,2",
-       [](double x) { return gsl_cdf_gaussian_P(x - 10, 2); }, 11},
+      {"normal_truncated", "normal", "10,2", [](double x) { return gsl_cdf_gaussian_P(x - 10, 2); },
+       11},
       {"exponential_truncated", "exponential", "3",
        [](double x) { return gsl_cdf_exponential_P(x, 3); }, 2},
       {"gamma_truncated", "gamma", "2.5,1.5", [](double x) { return gsl_cdf_gamma_P(x, 2.5, 1.5); },
        3},
       {"uniform_truncated", "uniform", "2,7", [](double x) { return gsl_cdf_flat_P(x, 2, 7); }, 4},
-      {"weibull_truncated", "weibull", "2,1.5", [](double x) { return gsl_cdf_weibull_P(x, 2, 1.5); },
-       1},
+      {"weibull_truncated", "weibull", "2,1.5",
+       [](double x) { return gsl_cdf_weibull_P(x, 2, 1.5); }, 1},
   };
 }
 
