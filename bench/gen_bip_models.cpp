@@ -121,21 +121,26 @@ void write_pairs(std::ostream& out, long atoms, const std::string& atom_type,
       << "end\n";
 }
 
-/// Writes `atoms` nodes meeting two by two on binary rendezvous (atoms / 2 connectors, plus one
-/// singleton when `atoms` is odd); each node cycles through three places, counting its steps.
-/// Every pair is always enabled: the engines' cost of finding and firing independent
-/// interactions, with no work in the actions.
-void write_rendezvous(std::ostream& out, const std::string& package, long atoms) {
-  out << "// " << atoms << " atoms meeting two by two.\n"
-      << "package " << package << "\n"
+/// The package line and the types the two-by-two families share: a Tick port, Pair and Solo.
+void write_pair_types(std::ostream& out, const std::string& package) {
+  out << "package " << package << "\n"
       << "  port type Tick(int value)\n\n"
       << "  connector type Pair(Tick left, Tick right)\n"
       << "    define left right\n"
       << "  end\n\n"
       << "  connector type Solo(Tick alone)\n"
       << "    define alone\n"
-      << "  end\n\n"
-      << "  atom type Cycler()\n"
+      << "  end\n\n";
+}
+
+/// Writes `atoms` nodes meeting two by two on binary rendezvous (atoms / 2 connectors, plus one
+/// singleton when `atoms` is odd); each node cycles through three places, counting its steps.
+/// Every pair is always enabled: the engines' cost of finding and firing independent
+/// interactions, with no work in the actions.
+void write_rendezvous(std::ostream& out, const std::string& package, long atoms) {
+  out << "// " << atoms << " atoms meeting two by two.\n";
+  write_pair_types(out, package);
+  out << "  atom type Cycler()\n"
       << "    data int count\n"
       << "    export port Tick step(count)\n\n"
       << "    place S0, S1, S2\n\n"
@@ -156,16 +161,9 @@ constexpr long kWorkStatements = 200;
 /// measures the cost of executing actions rather than scheduling.
 void write_work(std::ostream& out, const std::string& package, long atoms, long statements) {
   out << "// " << atoms << " atoms meeting two by two, each step "
-      << "running " << statements << " assignments.\n"
-      << "package " << package << "\n"
-      << "  port type Tick(int value)\n\n"
-      << "  connector type Pair(Tick left, Tick right)\n"
-      << "    define left right\n"
-      << "  end\n\n"
-      << "  connector type Solo(Tick alone)\n"
-      << "    define alone\n"
-      << "  end\n\n"
-      << "  atom type Worker()\n"
+      << "running " << statements << " assignments.\n";
+  write_pair_types(out, package);
+  out << "  atom type Worker()\n"
       << "    data int a, rounds\n"
       << "    export port Tick step(a)\n\n"
       << "    place IDLE, BUSY\n\n"

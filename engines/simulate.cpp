@@ -21,14 +21,9 @@ namespace {
 /// nanosecond) points of a bounded window; on an unbounded one the left end plus an
 /// exponential delay of mean 10 ns, as the reference engine's Interval::random does.
 TimeValue random_date(const Interval& interval, RandomStream& random) {
-  const TimeValue first = interval.first();
-  if (interval.bounded()) {
-    const TimeValue last = interval.last();
-    if (last <= first) return first;
-    return first +
-           static_cast<TimeValue>(random.below(static_cast<std::uint64_t>(last - first) + 1));
-  }
-  return first + static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
+  if (interval.bounded()) return uniform_date(interval, random);
+  return interval.first() +
+         static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
 }
 
 /// The delay floor(-10 ln u) of random_date's unbounded case, computed only when needed: the

@@ -99,6 +99,20 @@ struct RuntimeDetail {
   }
 };
 
+namespace {
+
+/// The frame of connector code (guard, up, down) over one interaction value.
+Frame connector_frame(InteractionValue& value, const PortContext& context, TimeValue now) {
+  Frame f;
+  f.connector_data = value.data.data();
+  f.port_slot = &RuntimeDetail::port_slot;
+  f.port_context = &context;
+  f.now = now;
+  return f;
+}
+
+}  // namespace
+
 Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
                  const BoundFunctions& functions, StringPool& strings, std::ostream& out,
                  RandomStream& random, const RuntimeOptions& options)
@@ -660,12 +674,8 @@ void Runtime::compute_connector(Index k) {
             state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
             state_.data.begin() +
                 static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
-        PortContext context{this, &value};
-        Frame f;
-        f.connector_data = value.data.data();
-        f.port_slot = &RuntimeDetail::port_slot;
-        f.port_context = &context;
-        f.now = state_.now;
+        const PortContext context{this, &value};
+        const Frame f = connector_frame(value, context, state_.now);
         if (!code || eval_.holds(code->guard, f)) {
           if (code) eval_.execute(code->up, f);
           value.after = value.raw;
@@ -863,13 +873,9 @@ void Runtime::run_down(Index index) {
   const auto& type = system_.connector_types[system_.connectors[value.connector].type];
   const int code = layout_.defined[value.connector][value.defined].code;
   if (code >= 0) {
-    PortContext context{this, &value};
-    Frame f;
-    f.connector_data = value.data.data();
-    f.port_slot = &RuntimeDetail::port_slot;
-    f.port_context = &context;
-    f.now = state_.now;
-    eval_.execute(type.interactions[static_cast<std::size_t>(code)].down, f);
+    const PortContext context{this, &value};
+    eval_.execute(type.interactions[static_cast<std::size_t>(code)].down,
+                  connector_frame(value, context, state_.now));
   }
   std::copy(
       value.data.begin(), value.data.end(),
@@ -893,12 +899,6 @@ bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
     return false;
   }
   return state_.resume_pending[atom] || update_atom(s, atom);
-}
-
-std::vector<std::pair<Index, Index>> Runtime::atom_ports(const Item& item) const {
-  std::vector<std::pair<Index, Index>> ports;
-  append_atom_ports(item, ports);
-  return ports;
 }
 
 void Runtime::append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const {

@@ -146,9 +146,7 @@ class Runtime {
   /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
   /// 6, policy ignore drops them. False with error() set on error 6.
   bool receive_unexpected_events(TimeValue upto);
-  /// The atom ports (atom, port) an item fires, in execution order.
-  std::vector<std::pair<Index, Index>> atom_ports(const Item& item) const;
-  /// As atom_ports, appended to `out` (no allocation once `out` has grown).
+  /// Appends the atom ports (atom, port) an item fires to `out`, in execution order.
   void append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const;
   /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
   double clock_value(Index atom, Index clock, TimeValue at) const;

@@ -82,16 +82,7 @@ Runtime::~Runtime() = default;
 bool Runtime::execute_value_in_parallel(Index index) {
   ParallelFiring& p = *parallel_;
   p.ports.clear();
-  std::function<void(Index)> walk = [&](Index value) {
-    for (const PortValue& pv : values_[value].choice) {
-      if (pv.from_atom) {
-        p.ports.emplace_back(pv.atom, pv.port);
-      } else {
-        walk(pv.sub);
-      }
-    }
-  };
-  walk(index);
+  append_value_ports(index, p.ports);
   // Parallel firing must pay off and must not be observable: two atoms at least with enough
   // work between them, each of a parallel-safe type, none listed twice (its second firing
   // would see the first).

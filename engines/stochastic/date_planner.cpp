@@ -5,6 +5,13 @@
 
 namespace smcbip::engines {
 
+TimeValue uniform_date(const Interval& window, RandomStream& random) {
+  const TimeValue first = window.first();
+  const TimeValue last = window.last();
+  if (last <= first) return first;
+  return first + static_cast<TimeValue>(random.below(static_cast<std::uint64_t>(last - first) + 1));
+}
+
 namespace {
 
 bool same(const Constraint& a, const Constraint& b) {
@@ -104,28 +111,27 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
   // The item's own window from now: the dates other items' deadlines cut off stay possible, as
   // the race decides whether the item gets there.
   const Interval window = item.offered.interval.intersect(Interval::from(runtime.state().now));
-  for (const auto& [atom, port] : ports_) {
-    const auto& type = system_.atom_types[system_.atoms[atom].type];
-    if (type.ports[port].stochastic) {
-      return draw_stochastic(runtime, atom, port, window, date, error);
-    }
+  if (const auto stochastic = stochastic_port()) {
+    return draw_stochastic(runtime, stochastic->first, stochastic->second, window, date, error);
   }
   date = draw_timed(item.offered.urgency, window);
   return true;
 }
 
-bool DatePlanner::is_stochastic(const Runtime& runtime, const Item& item) {
-  key_of(runtime, item);
+std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
   for (const auto& [atom, port] : ports_) {
-    if (system_.atom_types[system_.atoms[atom].type].ports[port].stochastic) return true;
+    if (system_.atom_types[system_.atoms[atom].type].ports[port].stochastic) {
+      return std::pair{atom, port};
+    }
   }
-  return false;
+  return std::nullopt;
 }
 
 void DatePlanner::replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates) {
   const std::vector<Item>& items = runtime.items();
   for (std::size_t i = 0; i < items.size(); ++i) {
-    if (is_stochastic(runtime, items[i])) continue;  // sets key_ for items[i]
+    key_of(runtime, items[i]);
+    if (stochastic_port()) continue;
     dates[i] = draw_timed(items[i].constraint.urgency, items[i].constraint.interval);
     plan_of().date = dates[i];
   }
@@ -134,12 +140,7 @@ void DatePlanner::replan_within_windows(const Runtime& runtime, std::vector<Time
 TimeValue DatePlanner::draw_timed(bipc::Urgency urgency, const Interval& window) {
   const TimeValue first = window.first();
   if (urgency == bipc::Urgency::Eager) return first;
-  if (window.bounded()) {
-    const TimeValue last = window.last();
-    if (last <= first) return first;
-    return first +
-           static_cast<TimeValue>(random_.below(static_cast<std::uint64_t>(last - first) + 1));
-  }
+  if (window.bounded()) return uniform_date(window, random_);
   const double delay = -static_cast<double>(unbounded_mean_) * std::log(random_.uniform01_open());
   return after(first, std::floor(delay));
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -26,6 +27,9 @@ using CustomDistributions = std::map<std::string, EmpiricalCdf>;
 /// Reads the empirical CDF files of `system`'s custom ports into `out`; a message naming the
 /// file on failure.
 std::string load_custom_distributions(const bipc::ir::System& system, CustomDistributions& out);
+
+/// A date uniform over the integer nanoseconds of a bounded window.
+TimeValue uniform_date(const Interval& window, RandomStream& random);
 
 /// Whether some port of `system` carries a @stochastic annotation.
 bool has_stochastic_ports(const bipc::ir::System& system);
@@ -75,7 +79,8 @@ class DatePlanner {
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
-  bool is_stochastic(const Runtime& runtime, const Item& item);
+  /// The @stochastic port among ports_ (at most one per interaction), if any.
+  std::optional<std::pair<Index, Index>> stochastic_port() const;
 
   const bipc::ir::System& system_;
   RandomStream& random_;
