@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <functional>
 
+#include "engines/semantics/maximal_interaction.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -174,6 +176,25 @@ bool side_ports(const System& system, const bipc::ir::PatternSide& side, PortSet
   return true;
 }
 
+/// The defined interactions with the `on` clause (guard, up, down) of each, if any.
+std::vector<DefinedInteraction> with_code(const bipc::ir::ConnectorType& type,
+                                          const std::vector<PortSet>& sets) {
+  std::vector<DefinedInteraction> defined;
+  for (PortSet ports : sets) {
+    DefinedInteraction d{ports, -1};
+    for (std::size_t i = 0; i < type.interactions.size(); ++i) {
+      PortSet on = 0;
+      for (Index p : type.interactions[i].ports) on |= PortSet{1} << p;
+      if (on == ports) {
+        d.code = static_cast<int>(i);
+        break;
+      }
+    }
+    defined.push_back(d);
+  }
+  return defined;
+}
+
 }  // namespace
 
 std::optional<std::vector<PortSet>> defined_interactions(const std::vector<DefineNode>& define,
@@ -207,31 +228,27 @@ std::string build_layout(const System& system, Layout& layout) {
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];
     const bipc::ir::ConnectorType& type = system.connector_types[connector.type];
-    if (type.ports.size() > 64) {
-      return "connector '" + connector.path + "' has more than 64 ports; not supported";
+    const bool maximal_only = computes_maximal_only(system, k);
+    layout.maximal_only.push_back(maximal_only ? 1 : 0);
+    const bool wide = type.ports.size() > kPortSetBits;
+    if (wide && !maximal_only) {
+      return "connector '" + connector.path + "' has more than " + std::to_string(kPortSetBits) +
+             " ports and a guard, an `up` calling a function, an export, a sub-connector or a "
+             "priority naming it; the engines support such wide connectors only without these";
     }
     layout.connector_data.push_back(layout.data_size);
     layout.data_size += type.data.size();
-    std::vector<DefinedInteraction> defined;
-    const std::optional<std::vector<PortSet>> sets = defined_interactions(type.define);
-    if (!sets) {
+    const std::optional<std::vector<PortSet>> sets =
+        wide ? std::nullopt : defined_interactions(type.define);
+    if (!sets && !maximal_only) {
       return "connector '" + connector.path + "' defines more than " +
              std::to_string(kMaxDefinedInteractions) +
-             " interactions; the engines enumerate them all and do not support that many";
+             " interactions and a guard, an `up` calling a function, an export, a sub-connector "
+             "or a priority naming it; the engines enumerate the interactions of such connectors "
+             "and do not support that many";
     }
-    for (PortSet ports : *sets) {
-      DefinedInteraction d{ports, -1};
-      for (std::size_t i = 0; i < type.interactions.size(); ++i) {
-        PortSet on = 0;
-        for (Index p : type.interactions[i].ports) on |= PortSet{1} << p;
-        if (on == ports) {
-          d.code = static_cast<int>(i);
-          break;
-        }
-      }
-      defined.push_back(d);
-    }
-    layout.defined.push_back(std::move(defined));
+    layout.enumerated.push_back(sets ? 1 : 0);
+    layout.defined.push_back(sets ? with_code(type, *sets) : std::vector<DefinedInteraction>{});
     // Top level: not bound by another connector of its own compound.
     bool top = true;
     for (Index by : connector.bound_by_all) {

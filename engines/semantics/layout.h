@@ -15,8 +15,10 @@ namespace smcbip::engines {
 
 using bipc::ir::Index;
 
-/// A set of port parameters of one connector (connectors have at most 64 ports each).
+/// A set of port parameters of one connector with at most 64 ports (wider connectors, which
+/// only maximal_only connectors may be, leave their sets empty and list their ports in order).
 using PortSet = std::uint64_t;
+inline constexpr std::size_t kPortSetBits = 64;
 
 /// One interaction a connector's define expression allows, as a set of its port parameters.
 struct DefinedInteraction {
@@ -41,6 +43,11 @@ struct Layout {
   std::vector<Val> params;                               // atom parameters, flattened
   std::vector<TimeValue> clock_units;                    // per flattened clock
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
+  /// Per connector: whether `defined` lists every interaction (not when there are too many or
+  /// the connector is too wide; it is then maximal_only).
+  std::vector<std::uint8_t> enumerated;
+  /// Per connector: computes_maximal_only (maximal_interaction.h).
+  std::vector<std::uint8_t> maximal_only;
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound
   std::vector<Index> listed_connectors;  // connectors without export, in listing order
   std::vector<std::pair<Index, Index>> internal_ports;   // (atom, port) in listing order
@@ -51,7 +58,7 @@ struct Layout {
 };
 
 /// Builds the layout; an error message names what the engines cannot run (e.g. a connector
-/// with more than 64 ports).
+/// with more than 64 ports and a guard).
 std::string build_layout(const bipc::ir::System& system, Layout& layout);
 
 /// The interactions a define expression allows, in the reference engine's order: the tree's

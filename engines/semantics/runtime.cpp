@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "engines/engines.h"
+#include "engines/semantics/maximal_interaction.h"
 #include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
@@ -76,14 +77,23 @@ struct PortContext {
   const InteractionValue* value;
 };
 
+/// The value chosen for a port parameter taking part in an interaction value.
+const PortValue& chosen(const InteractionValue& v, Index port) {
+  if (port < kPortSetBits && v.ports != 0) {
+    const PortSet below = v.ports & ((PortSet{1} << port) - 1);
+    return v.choice[static_cast<std::size_t>(std::popcount(below))];
+  }
+  // Wider connectors: the choice is in port order.
+  return *std::lower_bound(v.choice.begin(), v.choice.end(), port,
+                           [](const PortValue& pv, Index p) { return pv.param < p; });
+}
+
 }  // namespace
 
 struct RuntimeDetail {
   static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
     const auto& c = *static_cast<const PortContext*>(context);
-    const InteractionValue& v = *c.value;
-    const PortSet below = port < 64 ? (v.ports & ((PortSet{1} << port) - 1)) : 0;
-    const PortValue& pv = v.choice[static_cast<std::size_t>(std::popcount(below))];
+    const PortValue& pv = chosen(*c.value, port);
     Runtime& r = *c.runtime;
     if (pv.from_atom) {
       const AtomType& type = r.system_.atom_types[r.system_.atoms[pv.atom].type];
@@ -609,25 +619,47 @@ void Runtime::compute_connector(Index k) {
   // Connectors binding this one are stale too, so nothing refers to its old values any more.
   free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
   connector_values_[k].clear();
-  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
-  const auto& type = system_.connector_types[connector.type];
-  const std::size_t n = connector.bound.size();
-  // Scratch per recursion depth (sub-connectors are computed from inside this loop).
+  // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
   if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
   ConnectorScratch& scratch = scratch_[scratch_depth_];
   const struct DepthGuard {
     std::size_t& depth;
     ~DepthGuard() { --depth; }
   } depth_guard{++scratch_depth_};
-  std::vector<std::vector<PortValue>>& offers = scratch.offers;
+  gather_offers(k, scratch.offers);
+  if (layout_.maximal_only[k] && maximal_progress_ && add_largest_values(k, scratch)) return;
+  if (!layout_.enumerated[k]) {
+    throw UnsupportedRun{"connector '" + layout_.connector_names[k] +
+                         "': its enabled ports offer different timing constraints (or maximal "
+                         "progress is disabled), so its interactions would have to be enumerated, "
+                         "and it has too many for that"};
+  }
+  const std::size_t n = system_.connectors[k].bound.size();
+  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
+  for (std::uint32_t d = 0; d < defined.size(); ++d) {
+    const PortSet ports = defined[d].ports;
+    scratch.members.clear();
+    bool possible = true;
+    for (Index i = 0; i < n && possible; ++i) {
+      if (!(ports & (PortSet{1} << i))) continue;
+      scratch.members.push_back(i);
+      possible = !scratch.offers[i].empty();
+    }
+    if (possible) add_values(k, d, ports, defined[d].code, scratch);
+  }
+}
+
+void Runtime::gather_offers(Index k, std::vector<std::vector<PortValue>>& offers) {
+  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
+  const std::size_t n = connector.bound.size();
   if (offers.size() < n) offers.resize(n);
   for (std::size_t i = 0; i < n; ++i) offers[i].clear();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (Index i = 0; i < n; ++i) {
     for (const bipc::ir::PortRef& ref : connector.bound[i]) {
       if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
         if (state_.resume_pending[ref.instance]) continue;
         const auto& v = port_values_[port_offset_[ref.instance] + ref.port];
-        if (v) offers[i].push_back({true, ref.instance, ref.port, kNone, v->constraint});
+        if (v) offers[i].push_back({true, ref.instance, ref.port, kNone, v->constraint, i});
         continue;
       }
       compute_connector(ref.instance);
@@ -635,70 +667,97 @@ void Runtime::compute_connector(Index k) {
         const InteractionValue& sv = values_[sub];
         const Constraint& c = connector.bound_through_compound[i] ? sv.after : sv.raw;
         if (connector.bound_through_compound[i] && c.interval.empty()) continue;
-        offers[i].push_back({false, 0, 0, sub, c});
+        offers[i].push_back({false, 0, 0, sub, c, i});
       }
     }
   }
+}
+
+bool Runtime::add_largest_values(Index k, ConnectorScratch& scratch) {
+  // Every smaller interaction is dominated by the largest for good only when they all offer
+  // one constraint open to the right: it restricts them to after its window, which never ends.
+  const std::size_t n = system_.connectors[k].bound.size();
+  const Constraint* common = nullptr;
+  scratch.enabled.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const PortValue& offer : scratch.offers[i]) {
+      if (!common) common = &offer.constraint;
+      if (offer.constraint.interval != common->interval ||
+          offer.constraint.urgency != common->urgency) {
+        return false;
+      }
+    }
+    scratch.enabled[i] = scratch.offers[i].empty() ? 0 : 1;
+  }
+  if (!common) return true;  // nothing offered: no value
+  if (common->interval.right != kPlusInfinity) return false;
+  const auto& type = system_.connector_types[system_.connectors[k].type];
+  if (!largest_enabled_interaction(type.define, scratch.enabled, scratch.members)) return true;
+  PortSet ports = 0;
+  if (n <= kPortSetBits) {
+    for (Index i : scratch.members) ports |= PortSet{1} << i;
+  }
+  int code = -1;
+  for (std::size_t c = 0; c < type.interactions.size() && code < 0; ++c) {
+    if (std::equal(type.interactions[c].ports.begin(), type.interactions[c].ports.end(),
+                   scratch.members.begin(), scratch.members.end())) {
+      code = static_cast<int>(c);
+    }
+  }
+  add_values(k, InteractionValue::kLargest, ports, code, scratch);
+  return true;
+}
+
+void Runtime::add_values(Index k, std::uint32_t defined, PortSet ports, int code,
+                         ConnectorScratch& scratch) {
+  const auto& type = system_.connector_types[system_.connectors[k].type];
+  const bipc::ir::InteractionCode* on =
+      code >= 0 ? &type.interactions[static_cast<std::size_t>(code)] : nullptr;
+  const std::vector<Index>& members = scratch.members;
+  std::vector<std::size_t>& pick = scratch.pick;
+  pick.assign(members.size(), 0);
   IndexList& result = connector_values_[k];
-  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
-  for (std::uint32_t d = 0; d < defined.size(); ++d) {
-    const PortSet ports = defined[d].ports;
-    std::vector<std::size_t>& members = scratch.members;
-    members.clear();
-    bool possible = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!(ports & (PortSet{1} << i))) continue;
-      members.push_back(i);
-      possible = possible && !offers[i].empty();
+  for (;;) {
+    const Index slot = acquire_value();
+    InteractionValue& value = values_[slot];
+    value.connector = k;
+    value.defined = defined;
+    value.code = code;
+    value.ports = ports;
+    value.raw = Constraint{};
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const PortValue& pv = scratch.offers[members[m]][pick[m]];
+      value.choice.push_back(pv);
+      value.raw = intersect(value.raw, pv.constraint);
     }
-    if (!possible) continue;
-    const bipc::ir::InteractionCode* code =
-        defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)]
-                             : nullptr;
-    std::vector<std::size_t>& pick = scratch.pick;
-    pick.assign(members.size(), 0);
-    for (;;) {
-      const Index slot = acquire_value();
-      InteractionValue& value = values_[slot];
-      value.connector = k;
-      value.defined = d;
-      value.ports = ports;
-      value.raw = Constraint{};
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        const PortValue& pv = offers[members[m]][pick[m]];
-        value.choice.push_back(pv);
-        value.raw = intersect(value.raw, pv.constraint);
+    bool kept = false;
+    if (!value.raw.interval.empty()) {
+      value.data.assign(
+          state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
+          state_.data.begin() +
+              static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
+      const PortContext context{this, &value};
+      const Frame f = connector_frame(value, context, state_.now);
+      if (!on || eval_.holds(on->guard, f)) {
+        if (on) eval_.execute(on->up, f);
+        value.after = value.raw;
+        result.push_back(slot);
+        kept = true;
       }
-      if (!value.raw.interval.empty()) {
-        value.data.assign(
-            state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
-            state_.data.begin() +
-                static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
-        const PortContext context{this, &value};
-        const Frame f = connector_frame(value, context, state_.now);
-        if (!code || eval_.holds(code->guard, f)) {
-          if (code) eval_.execute(code->up, f);
-          value.after = value.raw;
-          result.push_back(slot);
-        } else {
-          free_values_.push_back(slot);
-        }
-      } else {
-        free_values_.push_back(slot);
-      }
-      // Next combination: the last port varies fastest (first port outermost).
-      std::size_t m = members.size();
-      while (m > 0) {
-        --m;
-        if (++pick[m] < offers[members[m]].size()) break;
-        pick[m] = 0;
-        if (m == 0) {
-          m = members.size() + 1;
-          break;
-        }
-      }
-      if (members.empty() || m == members.size() + 1) break;
     }
+    if (!kept) free_values_.push_back(slot);
+    // Next combination: the last port varies fastest (first port outermost).
+    std::size_t m = members.size();
+    while (m > 0) {
+      --m;
+      if (++pick[m] < scratch.offers[members[m]].size()) break;
+      pick[m] = 0;
+      if (m == 0) {
+        m = members.size() + 1;
+        break;
+      }
+    }
+    if (members.empty() || m == members.size() + 1) break;
   }
 }
 
@@ -786,6 +845,9 @@ bool Runtime::compute_items() {
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
     return fail(kInternalError, fault.message);
+  } catch (const UnsupportedRun& unsupported) {
+    cache_.invalidate_all();
+    return fail(kInputError, unsupported.message);
   }
   cache_.end();
   // Items with their windows cut to the admissible waiting interval.
@@ -871,7 +933,7 @@ Interval Runtime::time_bound() const {
 void Runtime::run_down(Index index) {
   InteractionValue& value = values_[index];
   const auto& type = system_.connector_types[system_.connectors[value.connector].type];
-  const int code = layout_.defined[value.connector][value.defined].code;
+  const int code = value.code;
   if (code >= 0) {
     const PortContext context{this, &value};
     eval_.execute(type.interactions[static_cast<std::size_t>(code)].down,
@@ -971,12 +1033,9 @@ Interval Runtime::resume_window() const {
 std::string Runtime::format_ports(const InteractionValue& value) const {
   const bipc::ir::ConnectorInstance& connector = system_.connectors[value.connector];
   std::string text;
-  std::size_t j = 0;
-  for (std::size_t i = 0; i < connector.bound.size(); ++i) {
-    if (!(value.ports & (PortSet{1} << i))) continue;
-    const PortValue& pv = value.choice[j++];
+  for (const PortValue& pv : value.choice) {
     if (!text.empty()) text += ' ';
-    text += connector.bound_names[i] + "(";
+    text += connector.bound_names[pv.param] + "(";
     const bipc::ir::PortType* port_type = nullptr;
     std::vector<Val> values;
     if (pv.from_atom) {

@@ -52,14 +52,19 @@ struct PortValue {
   Index atom = 0, port = 0;     // atom offers
   Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values_
   Constraint constraint;
+  Index param = 0;  // the connector's port parameter this value is offered to
 };
 
 /// An enabled interaction value of a connector.
 struct InteractionValue {
   Index connector = 0;
-  std::uint32_t defined = 0;  // index into Layout::defined[connector]
-  PortSet ports = 0;
-  std::vector<PortValue> choice;  // one per port parameter in `ports`, in declaration order
+  /// Index into Layout::defined[connector]; kLargest for the largest enabled interaction of a
+  /// maximal_only connector.
+  std::uint32_t defined = 0;
+  static constexpr std::uint32_t kLargest = 0xffffffffu;
+  int code = -1;                  // index into ConnectorType::interactions (guard, up, down), or -1
+  PortSet ports = 0;              // empty on connectors wider than a PortSet
+  std::vector<PortValue> choice;  // one per port parameter taking part, in declaration order
   Constraint raw;                 // intersection of the chosen port values' constraints
   Constraint after;               // after maximal progress and priorities
   std::vector<Val> data;          // connector data after `up`
@@ -100,6 +105,11 @@ struct RuntimeOptions {
 /// A run-time error of the model, with the reference engine's code and message.
 struct ModelError {
   int code = 0;
+  std::string message;
+};
+
+/// A state the engines cannot compute (thrown inside compute_items, reported as an input error).
+struct UnsupportedRun {
   std::string message;
 };
 
@@ -177,6 +187,13 @@ class Runtime {
       return false;
     }
   };
+  // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
+  struct ConnectorScratch {
+    std::vector<std::vector<PortValue>> offers;
+    std::vector<Index> members;  // port parameters of the port set being combined
+    std::vector<std::size_t> pick;
+    std::vector<std::uint8_t> enabled;  // per port parameter: whether it has an offer
+  };
   AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
   Frame atom_frame(Index atom);
   Frame atom_frame(AtomScratch s, Index atom);
@@ -192,6 +209,15 @@ class Runtime {
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
+  /// Every offer of the connector's port parameters, into `offers` (one list per parameter).
+  void gather_offers(Index connector, std::vector<std::vector<PortValue>>& offers);
+  /// Values of a maximal_only connector under maximal progress when its offers allow
+  /// (maximal_interaction.h); false when they do not and the defined ones must be enumerated.
+  bool add_largest_values(Index connector, ConnectorScratch& scratch);
+  /// The connector's values for one port set (`members`, increasing), one per combination of
+  /// the members' offers (the last member varies fastest), kept when the guard holds.
+  void add_values(Index connector, std::uint32_t defined, PortSet ports, int code,
+                  ConnectorScratch& scratch);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
   Index acquire_value();
   void begin_values(bool full);
@@ -254,11 +280,6 @@ class Runtime {
   std::vector<IndexList> connector_values_;
   std::vector<InteractionValue> values_;
   std::vector<Index> free_values_;
-  // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
-  struct ConnectorScratch {
-    std::vector<std::vector<PortValue>> offers;
-    std::vector<std::size_t> members, pick;
-  };
   std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
   std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
