@@ -12,6 +12,7 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
+#include "engines/model.h"
 #include "engines/run_observer.h"
 
 namespace smcbip::engines {
@@ -78,7 +79,10 @@ struct RunStreams {
 /// change between runs. One simulator per thread.
 class Simulator {
  public:
+  /// Runs the system interpreted from its IR.
   Simulator(const bipc::ir::System& system, const SimulateOptions& options, const Externs& externs);
+  /// Runs a model (interpreted or compiled); it must outlive the simulator.
+  Simulator(const Model& model, const SimulateOptions& options, const Externs& externs);
   ~Simulator();
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
@@ -96,6 +100,7 @@ class Simulator {
   struct Shared;  // what the runs share (layout, bound externs); defined in simulate.cpp
 
  private:
+  void prepare(const Externs& externs);
   std::unique_ptr<Shared> shared_;
 };
 

@@ -97,6 +97,8 @@ StepInfo step_info(const Item& item, const Runtime& runtime, std::uint64_t step,
 }  // namespace
 
 struct Simulator::Shared {
+  std::unique_ptr<InterpretedModel> owned;  // when built from an IR
+  const Model& model;
   const bipc::ir::System& system;
   SimulateOptions options;
   Layout layout;
@@ -107,7 +109,9 @@ struct Simulator::Shared {
   std::uint64_t seed = 0;
   bool stochastic = false;
 
-  Shared(const bipc::ir::System& s, const SimulateOptions& o) : system(s), options(o) {}
+  Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
+  Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
+      : owned(std::move(m)), model(*owned), system(owned->system()), options(o) {}
 };
 
 namespace {
@@ -140,7 +144,7 @@ class Simulation {
         input_(streams.input),
         observer_(observer),
         random_(shared.seed, run_index),
-        runtime_(shared.system, shared.layout, shared.functions, shared.strings, streams.model,
+        runtime_(shared.model, shared.layout, shared.functions, shared.strings, streams.model,
                  random_, runtime_options(shared.options)),
         planner_(shared.system, shared.custom, random_, shared.options.unbounded_mean),
         verbose_(!options_.silent && options_.trace == TraceFormat::Text) {}
@@ -415,8 +419,19 @@ class Simulation {
 
 Simulator::Simulator(const bipc::ir::System& system, const SimulateOptions& options,
                      const Externs& externs)
-    : shared_(std::make_unique<Shared>(system, options)) {
+    : shared_(std::make_unique<Shared>(std::make_unique<InterpretedModel>(system), options)) {
+  prepare(externs);
+}
+
+Simulator::Simulator(const Model& model, const SimulateOptions& options, const Externs& externs)
+    : shared_(std::make_unique<Shared>(model, options)) {
+  prepare(externs);
+}
+
+void Simulator::prepare(const Externs& externs) {
   Shared& s = *shared_;
+  const bipc::ir::System& system = s.system;
+  const SimulateOptions& options = s.options;
   s.problem = build_layout(system, s.layout);
   if (s.problem.empty()) bind_functions(system, externs, s.strings, s.functions);
   if (s.problem.empty()) s.problem = load_custom_distributions(system, s.custom);

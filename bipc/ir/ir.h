@@ -101,6 +101,9 @@ struct Instr {
 /// An empty expression Code means "true" (no guard).
 struct Code {
   std::vector<Instr> instrs;
+  /// Its place in the system's numbering of all its code (number_code): compiled models find
+  /// their function for this code by it.
+  std::uint32_t id = 0;
   bool empty() const { return instrs.empty(); }
 };
 
@@ -336,7 +339,14 @@ struct System {
   // From `@cpp(include=..., src=...)`: sources resolved against the folder of the package that
   // names them, headers as written, and those folders as include directories.
   std::vector<std::string> cpp_includes, cpp_sources, cpp_include_dirs;
+  std::uint32_t code_count = 0;  // Code::id runs from 0 to code_count - 1
 };
+
+/// Numbers every Code of the system (Code::id, System::code_count) in a fixed order: atom types
+/// (data initial values, initial action and resume, ports' stochastic parameters, transitions'
+/// guard, action and resume, priorities, invariants), connector types (data initial values,
+/// interactions' guard, up and down), then compounds' priority guards.
+void number_code(System& system);
 
 /// The last component of a dotted path or qualified name: "a.b.c" -> "c".
 std::string last_component(const std::string& path);

@@ -461,6 +461,7 @@ std::optional<ir::System> instantiate(const LoadedModel& model, const ast::Compo
   const std::size_t errors_before = diags.error_count();
   lower::Instantiator(model, system, diags).run(root);
   if (diags.error_count() > errors_before) return std::nullopt;
+  ir::number_code(system);
   return system;
 }
 

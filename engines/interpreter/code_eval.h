@@ -9,6 +9,7 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
+#include "engines/model.h"
 #include "engines/time_value.h"
 #include "engines/value.h"
 
@@ -57,21 +58,15 @@ struct BoundFunctions {
 std::string bind_functions(const bipc::ir::System& system, const Externs& externs,
                            StringPool& strings, BoundFunctions& out);
 
-/// Executes code over one frame. Not thread-safe: one evaluator per thread.
-class CodeEvaluator {
+/// Interprets the IR's code over one frame (the ModelCode of InterpretedModel). Not
+/// thread-safe: one evaluator per thread.
+class CodeEvaluator final : public ModelCode {
  public:
   CodeEvaluator(const bipc::ir::System& system, const BoundFunctions& functions, CallContext& call);
 
-  /// Runs an expression (an empty one is `true`) and returns its value.
-  Val evaluate(const bipc::ir::Code& code, const Frame& frame);
-  bool holds(const bipc::ir::Code& code, const Frame& frame) {
-    return code.empty() || evaluate(code, frame).b;
-  }
-  /// Runs a statement block.
-  void execute(const bipc::ir::Code& code, const Frame& frame);
-  /// The dates (absolute, at or after frame.now or not) at which a guard over clocks holds,
-  /// with data read as they are now. Empty code holds always.
-  Interval holds_when(const bipc::ir::Code& code, const Frame& frame);
+  Val evaluate(const bipc::ir::Code& code, const Frame& frame) override;
+  void execute(const bipc::ir::Code& code, const Frame& frame) override;
+  Interval holds_when(const bipc::ir::Code& code, const Frame& frame) override;
 
   /// The value of a clock at a date, in the clock's unit.
   static double clock_value(const ClockState& clock, TimeValue unit, TimeValue at) {

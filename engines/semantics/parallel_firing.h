@@ -11,6 +11,7 @@
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/model.h"
 #include "engines/parallel/fork_join_pool.h"
 #include "engines/semantics/runtime.h"
 
@@ -34,18 +35,17 @@ std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system);
 /// of the data of the atom it fires. Cache-line aligned: the evaluator writes its stack's end
 /// at every instruction, which must not share a line with another thread's.
 struct alignas(64) ThreadEvaluator {
-  ThreadEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
-                  const CallContext& main)
-      : call(main), eval(system, functions, call) {}
+  ThreadEvaluator(const Model& model, const BoundFunctions& functions, const CallContext& main)
+      : call(main), eval(model.make_code(functions, call)) {}
   CallContext call;
-  CodeEvaluator eval;
+  std::unique_ptr<ModelCode> eval;
   std::vector<Val> data;
 };
 
 /// The state of the multithread scheduler inside a Runtime.
 struct ParallelFiring {
-  ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
-                 const CallContext& main, unsigned threads);
+  ParallelFiring(const Model& model, const BoundFunctions& functions, const CallContext& main,
+                 unsigned threads);
 
   parallel::ForkJoinPool pool;
   std::vector<std::unique_ptr<ThreadEvaluator>> evaluators;  // one per pool thread

@@ -123,26 +123,28 @@ Frame connector_frame(InteractionValue& value, const PortContext& context, TimeV
 
 }  // namespace
 
-Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
-                 const BoundFunctions& functions, StringPool& strings, std::ostream& out,
-                 RandomStream& random, const RuntimeOptions& options)
-    : system_(system),
+Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions& functions,
+                 StringPool& strings, std::ostream& out, RandomStream& random,
+                 const RuntimeOptions& options)
+    : system_(model.system()),
       layout_(layout),
       functions_(functions),
       strings_(strings),
       call_{out, strings, &random, {}},
-      eval_(system, functions, call_),
+      code_(model.make_code(functions, call_)),
+      eval_(*code_),
       options_(options),
       maximal_progress_(options.maximal_progress),
-      cache_(system, layout) {
-  for (Index a = 0; a < system.atoms.size(); ++a) {
+      cache_(system_, layout) {
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
-    port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
+    port_values_.resize(port_values_.size() +
+                        system_.atom_types[system_.atoms[a].type].ports.size());
   }
-  atom_invariant_.assign(system.atoms.size(), Interval::all());
-  bounds_time_.assign(system.atoms.size(), 0);
+  atom_invariant_.assign(system_.atoms.size(), Interval::all());
+  bounds_time_.assign(system_.atoms.size(), 0);
   if (options.threads > 1) {
-    parallel_ = std::make_unique<ParallelFiring>(system, functions, call_, options.threads);
+    parallel_ = std::make_unique<ParallelFiring>(model, functions, call_, options.threads);
   }
 }
 

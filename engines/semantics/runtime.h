@@ -16,6 +16,7 @@
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/model.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
@@ -117,7 +118,7 @@ struct ParallelFiring;
 
 class Runtime {
  public:
-  Runtime(const bipc::ir::System& system, const Layout& layout, const BoundFunctions& functions,
+  Runtime(const Model& model, const Layout& layout, const BoundFunctions& functions,
           StringPool& strings, std::ostream& out, RandomStream& random,
           const RuntimeOptions& options);
   ~Runtime();
@@ -175,7 +176,7 @@ class Runtime {
   /// record. The atoms of one interaction may fire on several threads at once (multithread
   /// scheduler); each touches only its own slots of the state.
   struct AtomScratch {
-    CodeEvaluator& eval;
+    ModelCode& eval;
     ModelError& error;
     /// When set, the data of the one atom being fired: a private copy, so that threads firing
     /// neighbouring atoms do not write to the same cache lines of the state.
@@ -260,7 +261,8 @@ class Runtime {
   const BoundFunctions& functions_;
   StringPool& strings_;
   CallContext call_;
-  CodeEvaluator eval_;
+  std::unique_ptr<ModelCode> code_;
+  ModelCode& eval_;  // *code_
   RuntimeOptions options_;
   bool maximal_progress_;
   RunState state_;

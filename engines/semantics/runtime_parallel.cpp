@@ -66,15 +66,15 @@ std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system) 
   return costs;
 }
 
-ParallelFiring::ParallelFiring(const bipc::ir::System& system, const BoundFunctions& functions,
+ParallelFiring::ParallelFiring(const Model& model, const BoundFunctions& functions,
                                const CallContext& main, unsigned threads)
     : pool(threads),
-      safe_type(parallel_safe_atom_types(system, functions)),
-      cost(atom_type_firing_costs(system)) {
+      safe_type(parallel_safe_atom_types(model.system(), functions)),
+      cost(atom_type_firing_costs(model.system())) {
   for (unsigned t = 0; t < pool.size(); ++t) {
-    evaluators.push_back(std::make_unique<ThreadEvaluator>(system, functions, main));
+    evaluators.push_back(std::make_unique<ThreadEvaluator>(model, functions, main));
   }
-  seen.assign(system.atoms.size(), 0);
+  seen.assign(model.system().atoms.size(), 0);
 }
 
 Runtime::~Runtime() = default;
@@ -131,7 +131,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
     const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
     t.data.assign(first, first + static_cast<std::ptrdiff_t>(
                                      system_.atom_types[system_.atoms[atom].type].data.size()));
-    AtomScratch s{t.eval, p.errors[i], t.data.data(), /*on_worker=*/true};
+    AtomScratch s{*t.eval, p.errors[i], t.data.data(), /*on_worker=*/true};
     try {
       p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {

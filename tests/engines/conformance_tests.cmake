@@ -18,4 +18,5 @@ set(ENGINES_REALTIME_TEST_SOURCES
   trace_oracles.cpp)
 list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES interactive_test.cpp)
-list(APPEND ENGINES_TEST_SOURCES limits_test.cpp maximal_interaction_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES limits_test.cpp maximal_interaction_test.cpp
+  model_interface_test.cpp)

@@ -108,15 +108,16 @@ engines::Externs test_externs() {
 /// A Runtime with everything it refers to.
 struct Instance {
   Instance(const bipc::ir::System& system, const engines::Externs& externs, unsigned threads)
-      : random(1, 0) {
+      : model(system), random(1, 0) {
     EXPECT_EQ(engines::build_layout(system, layout), "");
     engines::bind_functions(system, externs, strings, functions);
     engines::RuntimeOptions options;
     options.threads = threads;
     options.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
-    runtime = std::make_unique<engines::Runtime>(system, layout, functions, strings, out, random,
-                                                 options);
+    runtime =
+        std::make_unique<engines::Runtime>(model, layout, functions, strings, out, random, options);
   }
+  engines::InterpretedModel model;
   engines::Layout layout;
   engines::StringPool strings;
   engines::BoundFunctions functions;

@@ -1,0 +1,62 @@
+// The model interface of the engines: a system's structure (the IR's atoms, connectors and
+// priorities, as tables) and its code (every guard, action, timing constraint and stochastic
+// parameter, found by Code::id). The semantics (engines/semantics) and the schedulers run over
+// it, whether the code is interpreted from the IR or compiled from generated C++.
+#pragma once
+
+#include <memory>
+
+#include "bipc/ir/ir.h"
+#include "engines/externs.h"
+#include "engines/time_value.h"
+#include "engines/value.h"
+
+namespace smcbip::engines {
+
+struct Frame;
+struct BoundFunctions;
+
+/// Runs a model's code over one frame (an atom's or a connector's slots, and the date). One per
+/// thread: an implementation may keep a stack. Faults (division by zero, a missing extern) are
+/// thrown as CodeFault.
+class ModelCode {
+ public:
+  virtual ~ModelCode() = default;
+  /// The value of an expression (an empty one is `true`).
+  virtual Val evaluate(const bipc::ir::Code& code, const Frame& frame) = 0;
+  /// Runs a statement block.
+  virtual void execute(const bipc::ir::Code& code, const Frame& frame) = 0;
+  /// The dates (absolute) at which a guard over clocks holds, data read as they are now; empty
+  /// code holds always.
+  virtual Interval holds_when(const bipc::ir::Code& code, const Frame& frame) = 0;
+
+  bool holds(const bipc::ir::Code& code, const Frame& frame) {
+    return code.empty() || evaluate(code, frame).b;
+  }
+};
+
+/// A runnable model: its structure, and code runners for it.
+class Model {
+ public:
+  virtual ~Model() = default;
+  /// The structure (immutable, shared by every run and thread).
+  virtual const bipc::ir::System& system() const = 0;
+  /// A code runner for one thread; extern calls go through `functions` (bound from the run's
+  /// registry) and see `call` (the run's output, strings and random stream).
+  virtual std::unique_ptr<ModelCode> make_code(const BoundFunctions& functions,
+                                               CallContext& call) const = 0;
+};
+
+/// The model interpreted from its IR: expressions run on a stack machine over Code::instrs.
+class InterpretedModel final : public Model {
+ public:
+  explicit InterpretedModel(const bipc::ir::System& system) : system_(system) {}
+  const bipc::ir::System& system() const override { return system_; }
+  std::unique_ptr<ModelCode> make_code(const BoundFunctions& functions,
+                                       CallContext& call) const override;
+
+ private:
+  const bipc::ir::System& system_;
+};
+
+}  // namespace smcbip::engines
