@@ -629,7 +629,12 @@ void Runtime::compute_connector(Index k) {
     ~DepthGuard() { --depth; }
   } depth_guard{++scratch_depth_};
   gather_offers(k, scratch.offers);
-  if (layout_.maximal_only[k] && maximal_progress_ && add_largest_values(k, scratch)) return;
+  // One defined interaction (a rendezvous) is its own largest: enumerating it is as quick.
+  const bool largest_pays = !layout_.enumerated[k] || layout_.defined[k].size() > 1;
+  if (layout_.maximal_only[k] && largest_pays && maximal_progress_ &&
+      add_largest_values(k, scratch)) {
+    return;
+  }
   if (!layout_.enumerated[k]) {
     throw UnsupportedRun{"connector '" + layout_.connector_names[k] +
                          "': its enabled ports offer different timing constraints (or maximal "
