@@ -78,30 +78,27 @@ TEST(EngineLimits, ABroadcastOfFiveHundredFiresEveryReceiverAtOnce) {
   }
 }
 
-TEST(EngineLimits, AGuardedWideConnectorIsAnInputError) {
-  const RunResult result = run_broadcast(64, "    on t provided (false)\n");
+/// The run is refused as bad input with a message containing `text`.
+void expect_refused(const RunResult& result, const std::string& text) {
   EXPECT_EQ(result.code, kInputError);
-  EXPECT_NE(result.message.find("connector 'c' has more than 64 ports and a guard"),
-            std::string::npos)
-      << result.message;
+  EXPECT_NE(result.message.find(text), std::string::npos) << result.message;
+}
+
+TEST(EngineLimits, AGuardedWideConnectorIsAnInputError) {
+  expect_refused(run_broadcast(64, "    on t provided (false)\n"),
+                 "connector 'c' has more than 64 ports and a guard");
 }
 
 TEST(EngineLimits, TooManyGuardedInteractionsIsAnInputError) {
-  const RunResult result = run_broadcast(40, "    on t provided (false)\n");
-  EXPECT_EQ(result.code, kInputError);
-  EXPECT_NE(result.message.find("connector 'c' defines more than 1048576 interactions"),
-            std::string::npos)
-      << result.message;
+  expect_refused(run_broadcast(40, "    on t provided (false)\n"),
+                 "connector 'c' defines more than 1048576 interactions");
 }
 
 TEST(EngineLimits, DifferentWindowsOnAWideConnectorAreAnInputError) {
   // Half the receivers offer their port from 5 ns on, the others at any time: the dominated
   // interactions may then run where the largest cannot, and there are 2^70 of them.
-  const RunResult result = run_broadcast(70, "", true);
-  EXPECT_EQ(result.code, kInputError);
-  EXPECT_NE(result.message.find("connector 'ROOT.c': its enabled ports offer different timing"),
-            std::string::npos)
-      << result.message;
+  expect_refused(run_broadcast(70, "", true),
+                 "connector 'ROOT.c': its enabled ports offer different timing");
 }
 
 }  // namespace
