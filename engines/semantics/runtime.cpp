@@ -790,7 +790,8 @@ bool Runtime::compute_items() {
   cache_.end();
   // Items with their windows cut to the admissible waiting interval.
   refresh_extern_events();
-  const Interval w = wait_interval();
+  items_window_ = wait_interval();
+  const Interval w = items_window_;
   // Fields are copied one by one: building an Item or an Interval in memory and copying it as
   // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
   auto add = [&](const Constraint& c) -> Item* {

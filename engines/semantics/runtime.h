@@ -132,6 +132,9 @@ class Runtime {
   std::string format_value(Val v, bipc::ir::ValueKind kind) const;
 
   const std::vector<Item>& items() const { return items_; }
+  /// The waiting interval the last compute_items cut the items' windows to. With an untimed
+  /// layout it is every item's window (their own constraints hold at all dates).
+  const Interval& items_window() const { return items_window_; }
   /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
   /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
@@ -263,6 +266,7 @@ class Runtime {
   std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
   std::vector<Item> items_;
+  Interval items_window_;                      // see items_window()
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
