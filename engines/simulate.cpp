@@ -171,9 +171,8 @@ class Simulation {
     if (!observe(StepInfo{})) return stopped();
     for (;;) {
       if (!runtime_.compute_items()) return error();
-      const auto& items = runtime_.items();
       const std::optional<TimeValue> arrival = runtime_.next_unexpected_arrival();
-      if (items.empty()) {
+      if (runtime_.item_count() == 0) {
         if (!arrival || !runtime_.wait_interval().contains(*arrival)) return finish_without_items();
         if (!receive_unexpected_events(*arrival)) return error();
         continue;
@@ -189,12 +188,13 @@ class Simulation {
         if (!receive_unexpected_events(*arrival)) return error();
         continue;
       }
+      // Only the text trace shows every item: other runs never have them listed.
+      const Item item = runtime_.item(chosen);
       if (verbose_) {
         if (!options_.interactive) write_state(out_, runtime_, steps_);
-        line("-> choose [" + std::to_string(chosen) + "] " +
-             item_text(runtime_, items[chosen], false) + " at global time " + format_time(date));
+        line("-> choose [" + std::to_string(chosen) + "] " + item_text(runtime_, item, false) +
+             " at global time " + format_time(date));
       }
-      const Item item = items[chosen];
       const StepInfo info = step_info(item, runtime_, steps_ + 1, date);
       if (options_.real_time) wait_until(date);
       if (!runtime_.execute(item, date)) return error();
@@ -301,7 +301,7 @@ class Simulation {
     const Interval& window = runtime_.items_window();
     const bool open_ended = window == Interval::from(now);
     if (!open_ended && !(window == Interval::point(now))) return std::nullopt;
-    const std::size_t n = runtime_.items().size();
+    const std::size_t n = runtime_.item_count();
     const auto chosen = static_cast<std::size_t>(random_.below(n));
     if (options_.asap || !open_ended) return std::pair{chosen, now};
     const double mean = options_.first_enabled ? 10.0 : 10.0 / static_cast<double>(n);

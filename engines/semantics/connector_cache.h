@@ -27,6 +27,8 @@ class ConnectorCache {
   bool all_stale() const { return all_stale_; }
   /// The atom's marking, data, resume state or offers may have changed.
   void touch_atom(bipc::ir::Index atom);
+  /// The atoms touched since the last begin().
+  const std::vector<bipc::ir::Index>& touched_atoms() const { return touched_list_; }
 
   /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
   /// closed upwards over the connectors binding them.

@@ -131,6 +131,7 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
   }
   atom_invariant_.assign(system.atoms.size(), Interval::all());
   bounds_time_.assign(system.atoms.size(), 0);
+  index_listing();
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(system, functions, call_, options.threads);
   }
@@ -762,6 +763,7 @@ void Runtime::recompute_priorities(Index k) {
   }
   cache_.set_urgent(k, urgent);
   cache_.priorities_changed(k);
+  count_connector_items(k);
 }
 
 void Runtime::compute_compound(Index c) {
@@ -776,9 +778,12 @@ void Runtime::compute_compound(Index c) {
 
 bool Runtime::compute_items() {
   items_.clear();
+  items_listed_ = true;
   time_bound_ = time_bound();
   if (!check_compound_priority_cycles()) return false;
-  begin_values(!options_.incremental || cache_.all_stale());
+  const bool full = !options_.incremental || cache_.all_stale();
+  note_internal_ports(full);
+  begin_values(full);
   try {
     // Compounds bottom-up: a compound export of a sub-connector needs its values after
     // priorities. Deeper compounds have larger indices than their parents.
@@ -788,24 +793,37 @@ bool Runtime::compute_items() {
     return fail(kInternalError, fault.message);
   }
   cache_.end();
-  // Items with their windows cut to the admissible waiting interval.
   refresh_extern_events();
   items_window_ = wait_interval();
-  const Interval w = items_window_;
+  items_listed_ = false;
+  if (!counts_items_) list_items();
+  return true;
+}
+
+bool Runtime::cut_item(const Constraint& c, Item& item) const {
+  Interval in = c.interval;
+  narrow(in, items_window_);
+  if (in.empty()) return false;
   // Fields are copied one by one: building an Item or an Interval in memory and copying it as
   // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
+  item.constraint.interval.left = in.left;
+  item.constraint.interval.right = in.right;
+  item.constraint.interval.left_open = in.left_open;
+  item.constraint.interval.right_open = in.right_open;
+  item.constraint.urgency = c.urgency;
+  item.offered = c;
+  return true;
+}
+
+void Runtime::list_items() const {
+  // Items with their windows cut to the admissible waiting interval.
+  items_.clear();
+  items_listed_ = true;
   auto add = [&](const Constraint& c) -> Item* {
-    Interval in = c.interval;
-    narrow(in, w);
-    if (in.empty()) return nullptr;
     Item& item = items_.emplace_back();
-    item.constraint.interval.left = in.left;
-    item.constraint.interval.right = in.right;
-    item.constraint.interval.left_open = in.left_open;
-    item.constraint.interval.right_open = in.right_open;
-    item.constraint.urgency = c.urgency;
-    item.offered = c;
-    return &item;
+    if (cut_item(c, item)) return &item;
+    items_.pop_back();
+    return nullptr;
   };
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
@@ -832,7 +850,6 @@ bool Runtime::compute_items() {
       item->port = e.port;
     }
   }
-  return true;
 }
 
 Interval Runtime::wait_interval() const {
