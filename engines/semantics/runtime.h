@@ -18,6 +18,7 @@
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
+#include "engines/semantics/index_set.h"
 #include "engines/semantics/item_index.h"
 #include "engines/semantics/layout.h"
 #include "engines/stochastic/random_stream.h"
@@ -208,7 +209,9 @@ class Runtime {
   /// A free slot of values_ for a new value (its vectors keep their capacity).
   Index acquire_value();
   void begin_values(bool full);
-  void compute_compound(Index compound);
+  /// Every connector's values, or (incremental) those of the connectors the cache finds stale.
+  void compute_values(bool full);
+  void compute_compound(const std::vector<Index>& connectors);
   /// items_ from the values and offers, cut to items_window_.
   void list_items() const;
   /// Whether item_count and item find items through item_index_ rather than items_.
@@ -223,8 +226,8 @@ class Runtime {
   Item internal_item(Index internal_port) const;
   /// Keeps item_index_'s count of the connector's items (if listed) up to date.
   void count_connector_items(Index connector);
-  /// Keeps item_index_ up to date for the internal ports of the atoms touched since the last
-  /// computation (all atoms when `full`).
+  /// Keeps urgent_internal_ports_ and item_index_ up to date for the internal ports of the
+  /// atoms touched since the last computation (all atoms when `full`).
   void note_internal_ports(bool full);
   void note_internal_port(Index internal_port);
   void recompute_priorities(Index connector);
@@ -255,7 +258,8 @@ class Runtime {
   /// Pulls the extern ports' next events and decides which ports take theirs (expected).
   void refresh_extern_events();
   bool fire_extern(const Item& item);
-  /// Keeps time_bound_atoms_ up to date after the atom's resume state or invariant changed.
+  /// Keeps bounding_atoms_ and resuming_atoms_ up to date after the atom's resume state or
+  /// invariant changed.
   void note_time_bound(Index atom);
   /// An atom fired on a worker thread: its connectors are stale, its time bound may differ.
   void note_atom_changed(Index atom);
@@ -275,11 +279,14 @@ class Runtime {
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
-  // Per atom: whether a pending resume or an invariant bounds the time that may pass; atoms
-  // without either leave wait_interval as it is, so it skips the atoms when none has.
-  std::vector<std::uint8_t> bounds_time_;
-  std::size_t time_bound_atoms_ = 0;
-  std::vector<std::vector<Index>> internal_ports_of_;  // per atom: its internal ports
+  // The atoms whose pending resume or invariant bounds the time that may pass (the others
+  // leave wait_interval as it is), and those with a pending resume.
+  IndexSet bounding_atoms_, resuming_atoms_;
+  // Internal ports (indices into layout_.internal_ports) offered with an urgent constraint, as
+  // of the last compute_items; per atom, its internal ports.
+  IndexSet urgent_internal_ports_;
+  std::vector<std::vector<Index>> internal_ports_of_;
+  std::vector<Index> compounds_with_rules_;  // the only ones priority cycles are searched in
   // Per connector: enabled interaction values (indices into values_), computed bottom up. The
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.

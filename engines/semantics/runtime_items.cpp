@@ -16,6 +16,7 @@ void Runtime::index_listing() {
   for (Index i = 0; i < layout_.internal_ports.size(); ++i) {
     internal_ports_of_[layout_.internal_ports[i].first].push_back(i);
   }
+  urgent_internal_ports_.reset(layout_.internal_ports.size());
   // On an untimed layout every enabled value and offered internal port is an item whenever
   // the waiting window is [now, +inf) (see items_counted), so counts per position suffice.
   counts_items_ = options_.incremental && layout_.untimed;
@@ -32,7 +33,7 @@ void Runtime::count_connector_items(Index k) {
 }
 
 void Runtime::note_internal_ports(bool full) {
-  if (!counts_items_) return;
+  if (layout_.internal_ports.empty()) return;  // spares a lookup per touched atom
   if (full) {
     for (Index i = 0; i < layout_.internal_ports.size(); ++i) note_internal_port(i);
     return;
@@ -46,7 +47,8 @@ void Runtime::note_internal_port(Index i) {
   const auto& [atom, port] = layout_.internal_ports[i];
   const std::optional<AtomPortValue>& offer = port_values_[port_offset_[atom] + port];
   const bool offered = offer && !state_.resume_pending[atom];
-  item_index_.set(layout_.listed_connectors.size() + i, offered ? 1 : 0);
+  urgent_internal_ports_.assign(i, offered && offer->constraint.urgency != bipc::Urgency::Lazy);
+  if (counts_items_) item_index_.set(layout_.listed_connectors.size() + i, offered ? 1 : 0);
 }
 
 bool Runtime::items_counted() const {
