@@ -175,9 +175,8 @@ class Simulation {
     if (!observe(StepInfo{})) return stopped();
     for (;;) {
       if (!runtime_.compute_items()) return error();
-      const auto& items = runtime_.items();
       const std::optional<TimeValue> arrival = runtime_.next_unexpected_arrival();
-      if (items.empty()) {
+      if (runtime_.item_count() == 0) {
         if (!arrival || !runtime_.wait_interval().contains(*arrival)) return finish_without_items();
         if (!receive_unexpected_events(*arrival)) return error();
         continue;
@@ -193,12 +192,13 @@ class Simulation {
         if (!receive_unexpected_events(*arrival)) return error();
         continue;
       }
+      // Only the text trace shows every item: other runs never have them listed.
+      const Item item = runtime_.item(chosen);
       if (verbose_) {
         if (!options_.interactive) write_state(out_, runtime_, steps_);
-        line("-> choose [" + std::to_string(chosen) + "] " +
-             item_text(runtime_, items[chosen], false) + " at global time " + format_time(date));
+        line("-> choose [" + std::to_string(chosen) + "] " + item_text(runtime_, item, false) +
+             " at global time " + format_time(date));
       }
-      const Item item = items[chosen];
       const StepInfo info = step_info(item, runtime_, steps_ + 1, date);
       if (options_.real_time) wait_until(date);
       if (!runtime_.execute(item, date)) return error();
@@ -289,7 +289,28 @@ class Simulation {
       return std::pair{*picked, earliest(window, runtime_.state().now)};
     }
     if (shared_.stochastic) return race();
+    if (auto choice = shared_window_choice()) return choice;
     return std::pair{random_choice()};
+  }
+
+  /// random_choice when every item has the same window (untimed models), in two draws instead
+  /// of one per item. The race is then symmetric: its winner is uniform among the n items and
+  /// independent of the winning date. On the window [now, +inf) the dates are now + floor(E_i),
+  /// the E_i i.i.d. exponential of mean 10 ns, so the earliest is now + floor(min E_i) and
+  /// min E_i is exponential of mean 10/n; --first-enabled keeps the winner's own date (mean
+  /// 10). On the window {now}, and with --asap, every date is now. Other windows: nullopt.
+  std::optional<std::pair<std::size_t, TimeValue>> shared_window_choice() {
+    if (!shared_.layout.untimed) return std::nullopt;
+    const TimeValue now = runtime_.state().now;
+    const Interval& window = runtime_.items_window();
+    const bool open_ended = window == Interval::from(now);
+    if (!open_ended && !(window == Interval::point(now))) return std::nullopt;
+    const std::size_t n = runtime_.item_count();
+    const auto chosen = static_cast<std::size_t>(random_.below(n));
+    if (options_.asap || !open_ended) return std::pair{chosen, now};
+    const double mean = options_.first_enabled ? 10.0 : 10.0 / static_cast<double>(n);
+    const double delay = std::floor(-mean * std::log(random_.uniform01_open()));
+    return std::pair{chosen, now + static_cast<TimeValue>(delay)};
   }
 
   /// The reference scheduler: every item draws a date in its window, the earliest wins.

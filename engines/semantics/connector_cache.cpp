@@ -1,6 +1,8 @@
 // Stale-connector bookkeeping of the optimised scheduler.
 #include "engines/semantics/connector_cache.h"
 
+#include <algorithm>
+
 namespace smcbip::engines {
 
 using bipc::ir::Index;
@@ -39,11 +41,20 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       atom_connectors_(system.atoms.size()),
       parents_(system.connectors.size()),
       ruled_(system.connectors.size(), 0),
-      time_dependent_(system.connectors.size(), 0),
-      urgent_(system.connectors.size(), 0),
+      rank_(system.connectors.size(), 0),
       stale_(system.connectors.size(), 0),
       computed_(system.connectors.size(), 0),
+      work_(system.compounds.size()),
+      in_work_(system.connectors.size(), 0),
+      queued_(system.compounds.size(), 0),
       touched_(system.atoms.size(), 0) {
+  time_dependent_.reset(system.connectors.size());
+  urgent_.reset(system.connectors.size());
+  for (Index c = 0; c < system.compounds.size(); ++c) {
+    const std::vector<Index>& connectors = system.compounds[c].connectors;
+    for (Index r = 0; r < connectors.size(); ++r) rank_[connectors[r]] = r;
+    if (!layout.rules[c].empty()) ruled_compounds_.push_back(c);
+  }
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];
     for (const std::vector<bipc::ir::PortRef>& refs : connector.bound) {
@@ -73,12 +84,38 @@ void ConnectorCache::mark_stale(Index k) {
   if (stale_[k]) return;
   stale_[k] = 1;
   stale_list_.push_back(k);
+  add_work(k);
   for (Index parent : parents_[k]) mark_stale(parent);
+}
+
+void ConnectorCache::add_work(Index k) {
+  if (in_work_[k]) return;
+  in_work_[k] = 1;
+  const Index compound = system_.connectors[k].parent;
+  work_[compound].push_back(k);
+  queue_compound(compound);
+}
+
+void ConnectorCache::queue_compound(Index compound) {
+  if (queued_[compound]) return;
+  queued_[compound] = 1;
+  queue_.push(compound);
+}
+
+void ConnectorCache::clear_work() {
+  for (; !queue_.empty(); queue_.pop()) worked_.push_back(queue_.top());
+  for (Index compound : worked_) {
+    for (Index k : work_[compound]) in_work_[k] = 0;
+    work_[compound].clear();
+    queued_[compound] = 0;
+  }
+  worked_.clear();
 }
 
 void ConnectorCache::begin(TimeValue now, bool full) {
   time_passed_ = full || now != last_now_;
   last_now_ = now;
+  clear_work();  // a failed computation may have left some behind
   if (full) {
     // A failed computation may have left flags behind.
     stale_.assign(stale_.size(), 1);
@@ -90,9 +127,30 @@ void ConnectorCache::begin(TimeValue now, bool full) {
       for (Index k : atom_connectors_[atom]) mark_stale(k);
     }
     for (Index k : volatile_) mark_stale(k);
+    if (time_passed_) {
+      for (Index k : time_dependent_) add_work(k);
+    }
+    for (Index compound : ruled_compounds_) queue_compound(compound);
   }
   for (Index atom : touched_list_) touched_[atom] = 0;
   touched_list_.clear();
+}
+
+bool ConnectorCache::next_compound(Index& compound) {
+  if (queue_.empty()) return false;
+  compound = queue_.top();
+  queue_.pop();
+  worked_.push_back(compound);
+  return true;
+}
+
+const std::vector<Index>& ConnectorCache::work(Index compound) {
+  if (!system_.compounds[compound].priorities.empty())
+    return system_.compounds[compound].connectors;
+  std::vector<Index>& connectors = work_[compound];
+  std::sort(connectors.begin(), connectors.end(),
+            [&](Index a, Index b) { return rank_[a] < rank_[b]; });
+  return connectors;
 }
 
 void ConnectorCache::priorities_changed(Index k) {
@@ -105,6 +163,7 @@ void ConnectorCache::priorities_changed(Index k) {
 void ConnectorCache::end() {
   for (Index k : stale_list_) stale_[k] = computed_[k] = 0;
   stale_list_.clear();
+  clear_work();
   all_stale_ = false;
 }
 

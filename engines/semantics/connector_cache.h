@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <queue>
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/semantics/index_set.h"
 #include "engines/semantics/layout.h"
 #include "engines/time_value.h"
 
@@ -27,10 +29,20 @@ class ConnectorCache {
   bool all_stale() const { return all_stale_; }
   /// The atom's marking, data, resume state or offers may have changed.
   void touch_atom(bipc::ir::Index atom);
+  /// The atoms touched since the last begin().
+  const std::vector<bipc::ir::Index>& touched_atoms() const { return touched_list_; }
 
   /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
   /// closed upwards over the connectors binding them.
   void begin(TimeValue now, bool full);
+  /// After a begin() that was not full: the next compound, deepest (largest index) first, with
+  /// connectors to compute or whose priorities to evaluate; false when there is none left.
+  /// Processing a compound may add enclosing compounds (priorities_changed), never deeper ones.
+  bool next_compound(bipc::ir::Index& compound);
+  /// The connectors of the compound next_compound gave that may need computing or their
+  /// priorities evaluating, in the compound's order: its stale and date-dependent ones, or all
+  /// of them when it has priority rules. Valid until end().
+  const std::vector<bipc::ir::Index>& work(bipc::ir::Index compound);
   bool stale(bipc::ir::Index connector) const { return stale_[connector] != 0; }
   /// Whether the connector's values must be computed now: true once per computation for each
   /// stale connector.
@@ -44,15 +56,16 @@ class ConnectorCache {
   /// any atom's data and their closure spans other connectors); or time passed and maximal
   /// progress restricted one of its values (restrictions depend on the date).
   bool needs_priorities(bipc::ir::Index connector) const {
-    return stale_[connector] || ruled_[connector] || (time_passed_ && time_dependent_[connector]);
+    return stale_[connector] || ruled_[connector] ||
+           (time_passed_ && time_dependent_.contains(connector));
   }
   /// Maximal progress restricted a value of the connector: its priorities depend on the date.
-  void note_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 1; }
-  void clear_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 0; }
-  /// Whether some value of the connector with priorities applied is urgent (not lazy): only
-  /// those bound the time that may pass, so Runtime::wait_interval visits only such connectors.
-  bool urgent(bipc::ir::Index connector) const { return urgent_[connector] != 0; }
-  void set_urgent(bipc::ir::Index connector, bool urgent) { urgent_[connector] = urgent ? 1 : 0; }
+  void note_time_dependent(bipc::ir::Index connector) { time_dependent_.insert(connector); }
+  void clear_time_dependent(bipc::ir::Index connector) { time_dependent_.erase(connector); }
+  /// The connectors some value of which, with priorities applied, is urgent (not lazy): only
+  /// those bound the time that may pass, so Runtime::wait_interval visits only them.
+  const IndexSet& urgent() const { return urgent_; }
+  void set_urgent(bipc::ir::Index connector, bool urgent) { urgent_.assign(connector, urgent); }
   /// The connector's `after` constraints were evaluated again: connectors of enclosing compounds
   /// that bind its export see them, so become stale (they come later in the bottom-up order).
   void priorities_changed(bipc::ir::Index connector);
@@ -61,15 +74,28 @@ class ConnectorCache {
 
  private:
   void mark_stale(bipc::ir::Index connector);
+  /// Lists the connector in its compound's work and queues the compound.
+  void add_work(bipc::ir::Index connector);
+  void queue_compound(bipc::ir::Index compound);
+  void clear_work();
 
   const bipc::ir::System& system_;
   std::vector<std::vector<bipc::ir::Index>> atom_connectors_;  // per atom: connectors binding it
   std::vector<std::vector<bipc::ir::Index>> parents_;  // per connector: connectors binding it
   std::vector<bipc::ir::Index> volatile_;              // connectors whose code is not cacheable
-  std::vector<std::uint8_t> ruled_;  // per connector: its compound has priority rules
-  std::vector<std::uint8_t> time_dependent_, urgent_;
+  std::vector<std::uint8_t> ruled_;               // per connector: its compound has priority rules
+  std::vector<bipc::ir::Index> ruled_compounds_;  // compounds with priority rules
+  std::vector<bipc::ir::Index> rank_;  // per connector: its position in its compound's list
+  IndexSet time_dependent_, urgent_;   // connectors
   std::vector<std::uint8_t> stale_, computed_;
   std::vector<bipc::ir::Index> stale_list_;
+  // Per compound: the connectors to visit (listed once each: in_work_) and whether the
+  // compound is queued; queued compounds wait in a max-heap, since enclosing compounds have
+  // smaller indices and must come after the compounds they contain.
+  std::vector<std::vector<bipc::ir::Index>> work_;
+  std::vector<std::uint8_t> in_work_, queued_;
+  std::priority_queue<bipc::ir::Index> queue_;
+  std::vector<bipc::ir::Index> worked_;  // compounds given by next_compound since begin()
   std::vector<std::uint8_t> touched_;
   std::vector<bipc::ir::Index> touched_list_;
   bool all_stale_ = true;

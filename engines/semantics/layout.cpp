@@ -260,6 +260,7 @@ std::string build_layout(const System& system, Layout& layout) {
   add_listing(system, 0, layout);
   add_atom_ports(system, 0, false, layout.internal_ports);
   add_atom_ports(system, 0, true, layout.extern_ports);
+  layout.untimed = layout.clock_count == 0 && layout.extern_ports.empty();
   layout.rules.resize(system.compounds.size());
   layout.rules_by_low.resize(system.connectors.size());
   for (Index c = 0; c < system.compounds.size(); ++c) {

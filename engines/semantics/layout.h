@@ -55,6 +55,9 @@ struct Layout {
   std::vector<std::vector<PriorityRule>> rules;          // per compound, in declaration order
   std::vector<std::vector<Index>> rules_by_low;          // per connector: rules of its compound
   std::vector<std::string> atom_names, connector_names;  // full names "ROOT.x"
+  /// No atom has a clock and no port is extern: every guard, invariant and resume condition
+  /// then holds at all dates or at none, so every enabled item's window is the waiting window.
+  bool untimed = false;
 };
 
 /// Builds the layout; an error message names what the engines cannot run (e.g. a connector

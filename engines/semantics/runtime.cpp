@@ -142,7 +142,12 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
                         system_.atom_types[system_.atoms[a].type].ports.size());
   }
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
-  bounds_time_.assign(system_.atoms.size(), 0);
+  bounding_atoms_.reset(system_.atoms.size());
+  resuming_atoms_.reset(system_.atoms.size());
+  for (Index c = 0; c < layout.rules.size(); ++c) {
+    if (!layout.rules[c].empty()) compounds_with_rules_.push_back(c);
+  }
+  index_listing();
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(model, functions, call_, options.threads);
   }
@@ -154,14 +159,9 @@ void Runtime::note_atom_changed(Index atom) {
 }
 
 void Runtime::note_time_bound(Index atom) {
-  const bool bound = state_.resume_pending[atom] || !(atom_invariant_[atom] == Interval::all());
-  if (bound == (bounds_time_[atom] != 0)) return;
-  bounds_time_[atom] = bound ? 1 : 0;
-  if (bound) {
-    ++time_bound_atoms_;
-  } else {
-    --time_bound_atoms_;
-  }
+  const bool pending = state_.resume_pending[atom] != 0;
+  resuming_atoms_.assign(atom, pending);
+  bounding_atoms_.assign(atom, pending || !(atom_invariant_[atom] == Interval::all()));
 }
 
 bool Runtime::fail(int code, std::string message) {
@@ -507,9 +507,8 @@ std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const
 
 bool Runtime::check_compound_priority_cycles() {
   acyclic_rule_sets_.resize(layout_.rules.size());
-  for (std::size_t compound = 0; compound < layout_.rules.size(); ++compound) {
+  for (const Index compound : compounds_with_rules_) {
     const std::vector<PriorityRule>& rules = layout_.rules[compound];
-    if (rules.empty()) continue;
     std::vector<bool> active(rules.size());
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
     // The search depends only on which rules are active: a set found acyclic stays so.
@@ -828,27 +827,43 @@ void Runtime::recompute_priorities(Index k) {
   }
   cache_.set_urgent(k, urgent);
   cache_.priorities_changed(k);
+  count_connector_items(k);
 }
 
-void Runtime::compute_compound(Index c) {
+void Runtime::compute_compound(const std::vector<Index>& connectors) {
   // All values of the compound first: priorities compare them with each other.
-  for (Index k : system_.compounds[c].connectors) {
+  for (Index k : connectors) {
     if (cache_.stale(k)) compute_connector(k);
   }
-  for (Index k : system_.compounds[c].connectors) {
+  for (Index k : connectors) {
     if (cache_.needs_priorities(k)) recompute_priorities(k);
   }
 }
 
+void Runtime::compute_values(bool full) {
+  // Compounds bottom-up: a compound export of a sub-connector needs its values after
+  // priorities. Deeper compounds have larger indices than their parents.
+  if (full) {
+    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) {
+      compute_compound(system_.compounds[c].connectors);
+    }
+    return;
+  }
+  // Only the compounds, and their connectors, that the cache finds work in: no step walks
+  // every connector.
+  for (Index c = 0; cache_.next_compound(c);) compute_compound(cache_.work(c));
+}
+
 bool Runtime::compute_items() {
   items_.clear();
+  items_listed_ = true;
   time_bound_ = time_bound();
   if (!check_compound_priority_cycles()) return false;
-  begin_values(!options_.incremental || cache_.all_stale());
+  const bool full = !options_.incremental || cache_.all_stale();
+  note_internal_ports(full);
+  begin_values(full);
   try {
-    // Compounds bottom-up: a compound export of a sub-connector needs its values after
-    // priorities. Deeper compounds have larger indices than their parents.
-    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) compute_compound(c);
+    compute_values(full);
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
     return fail(kInternalError, fault.message);
@@ -857,23 +872,37 @@ bool Runtime::compute_items() {
     return fail(kInputError, unsupported.message);
   }
   cache_.end();
-  // Items with their windows cut to the admissible waiting interval.
   refresh_extern_events();
-  const Interval w = wait_interval();
+  items_window_ = wait_interval();
+  items_listed_ = false;
+  if (!counts_items_) list_items();
+  return true;
+}
+
+bool Runtime::cut_item(const Constraint& c, Item& item) const {
+  Interval in = c.interval;
+  narrow(in, items_window_);
+  if (in.empty()) return false;
   // Fields are copied one by one: building an Item or an Interval in memory and copying it as
   // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
+  item.constraint.interval.left = in.left;
+  item.constraint.interval.right = in.right;
+  item.constraint.interval.left_open = in.left_open;
+  item.constraint.interval.right_open = in.right_open;
+  item.constraint.urgency = c.urgency;
+  item.offered = c;
+  return true;
+}
+
+void Runtime::list_items() const {
+  // Items with their windows cut to the admissible waiting interval.
+  items_.clear();
+  items_listed_ = true;
   auto add = [&](const Constraint& c) -> Item* {
-    Interval in = c.interval;
-    narrow(in, w);
-    if (in.empty()) return nullptr;
     Item& item = items_.emplace_back();
-    item.constraint.interval.left = in.left;
-    item.constraint.interval.right = in.right;
-    item.constraint.interval.left_open = in.left_open;
-    item.constraint.interval.right_open = in.right_open;
-    item.constraint.urgency = c.urgency;
-    item.offered = c;
-    return &item;
+    if (cut_item(c, item)) return &item;
+    items_.pop_back();
+    return nullptr;
   };
   for (Index k : layout_.listed_connectors) {
     for (Index v : connector_values_[k]) {
@@ -900,24 +929,23 @@ bool Runtime::compute_items() {
       item->port = e.port;
     }
   }
-  return true;
 }
 
 Interval Runtime::wait_interval() const {
-  // A lazy constraint lets time pass (its wait is `from now`, which leaves w as it is): skipped.
+  // A lazy constraint lets time pass (its wait is `from now`, which leaves w as it is): only
+  // the urgent connectors and internal ports are visited. Intersections: order-free.
   Interval w = Interval::from(state_.now);
-  for (Index k : layout_.listed_connectors) {
-    if (!cache_.urgent(k)) continue;
+  for (Index k : cache_.urgent()) {
+    if (listed_position_[k] == kNone) continue;
     for (Index v : connector_values_[k]) {
       const InteractionValue& value = values_[v];
       if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
       narrow(w, wait(value.raw, state_.now));
     }
   }
-  for (const auto& [atom, port] : layout_.internal_ports) {
-    if (state_.resume_pending[atom]) continue;
-    const auto& v = port_values_[port_offset_[atom] + port];
-    if (v && v->constraint.urgency != Urgency::Lazy) narrow(w, wait(v->constraint, state_.now));
+  for (Index i : urgent_internal_ports_) {
+    const auto& [atom, port] = layout_.internal_ports[i];
+    narrow(w, wait(port_values_[port_offset_[atom] + port]->constraint, state_.now));
   }
   for (const ExternPortState& e : extern_ports_) {
     if (e.expected) narrow(w, wait(*e.expected, state_.now));
@@ -927,8 +955,7 @@ Interval Runtime::wait_interval() const {
 
 Interval Runtime::time_bound() const {
   Interval w = Interval::all();
-  if (time_bound_atoms_ == 0) return w;
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
+  for (Index a : bounding_atoms_) {
     narrow(w, state_.resume_pending[a] ? state_.resume_interval[a] : atom_invariant_[a]);
   }
   return w;
@@ -1017,13 +1044,15 @@ bool Runtime::execute(const Item& item, TimeValue at) {
 
 /// Resumes atoms whose resume window holds `now`; returns false when one is already past.
 bool Runtime::resume_atoms(TimeValue now) {
-  std::vector<std::uint8_t>& pending = state_.resume_pending;
-  for (auto it = std::find(pending.begin(), pending.end(), 1); it != pending.end();
-       it = std::find(it + 1, pending.end(), 1)) {
-    const auto a = static_cast<Index>(it - pending.begin());
-    *it = 0;
-    note_time_bound(a);
-    if (!update_atom(a)) return false;
+  if (!resuming_atoms_.empty()) {
+    // In atom order, as the reference engine resumes them.
+    std::vector<Index> atoms(resuming_atoms_.begin(), resuming_atoms_.end());
+    std::sort(atoms.begin(), atoms.end());
+    for (Index a : atoms) {
+      state_.resume_pending[a] = 0;
+      note_time_bound(a);
+      if (!update_atom(a)) return false;
+    }
   }
   state_.now = std::max(state_.now, now);
   return true;
@@ -1031,9 +1060,7 @@ bool Runtime::resume_atoms(TimeValue now) {
 
 Interval Runtime::resume_window() const {
   Interval w = Interval::all();
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (state_.resume_pending[a]) w = w.intersect(state_.resume_interval[a]);
-  }
+  for (Index a : resuming_atoms_) w = w.intersect(state_.resume_interval[a]);
   return w;
 }
 

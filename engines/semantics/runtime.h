@@ -19,6 +19,8 @@
 #include "engines/model.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
+#include "engines/semantics/index_set.h"
+#include "engines/semantics/item_index.h"
 #include "engines/semantics/layout.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -142,7 +144,19 @@ class Runtime {
   Interval resume_window() const;
   std::string format_value(Val v, bipc::ir::ValueKind kind) const;
 
-  const std::vector<Item>& items() const { return items_; }
+  /// The enabled items computed by the last compute_items, valid until the next execute. The
+  /// optimised scheduler lists them only when asked (see item()).
+  const std::vector<Item>& items() const {
+    if (!items_listed_) list_items();
+    return items_;
+  }
+  /// items().size() and items()[k], without listing the items when the optimised scheduler
+  /// counts them (untimed layouts): then in O(log n).
+  std::size_t item_count() const;
+  Item item(std::size_t k) const;
+  /// The waiting interval the last compute_items cut the items' windows to. With an untimed
+  /// layout it is every item's window (their own constraints hold at all dates).
+  const Interval& items_window() const { return items_window_; }
   /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
   /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
@@ -222,7 +236,27 @@ class Runtime {
   /// A free slot of values_ for a new value (its vectors keep their capacity).
   Index acquire_value();
   void begin_values(bool full);
-  void compute_compound(Index compound);
+  /// Every connector's values, or (incremental) those of the connectors the cache finds stale.
+  void compute_values(bool full);
+  void compute_compound(const std::vector<Index>& connectors);
+  /// items_ from the values and offers, cut to items_window_.
+  void list_items() const;
+  /// Whether item_count and item find items through item_index_ rather than items_.
+  bool items_counted() const;
+  Item counted_item(std::size_t k) const;
+  /// The item of an enabled constraint with its window cut to items_window_; false when that
+  /// leaves nothing.
+  bool cut_item(const Constraint& c, Item& item) const;
+  /// Fills the per-connector and per-atom indices of the listing order (constructor).
+  void index_listing();
+  Item connector_item(std::size_t position, std::uint32_t rank) const;
+  Item internal_item(Index internal_port) const;
+  /// Keeps item_index_'s count of the connector's items (if listed) up to date.
+  void count_connector_items(Index connector);
+  /// Keeps urgent_internal_ports_ and item_index_ up to date for the internal ports of the
+  /// atoms touched since the last computation (all atoms when `full`).
+  void note_internal_ports(bool full);
+  void note_internal_port(Index internal_port);
   void recompute_priorities(Index connector);
   bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
   void apply_priorities(InteractionValue& value, Index connector_index);
@@ -251,7 +285,8 @@ class Runtime {
   /// Pulls the extern ports' next events and decides which ports take theirs (expected).
   void refresh_extern_events();
   bool fire_extern(const Item& item);
-  /// Keeps time_bound_atoms_ up to date after the atom's resume state or invariant changed.
+  /// Keeps bounding_atoms_ and resuming_atoms_ up to date after the atom's resume state or
+  /// invariant changed.
   void note_time_bound(Index atom);
   /// An atom fired on a worker thread: its connectors are stale, its time bound may differ.
   void note_atom_changed(Index atom);
@@ -272,10 +307,14 @@ class Runtime {
   std::vector<std::optional<AtomPortValue>> port_values_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
-  // Per atom: whether a pending resume or an invariant bounds the time that may pass; atoms
-  // without either leave wait_interval as it is, so it skips the atoms when none has.
-  std::vector<std::uint8_t> bounds_time_;
-  std::size_t time_bound_atoms_ = 0;
+  // The atoms whose pending resume or invariant bounds the time that may pass (the others
+  // leave wait_interval as it is), and those with a pending resume.
+  IndexSet bounding_atoms_, resuming_atoms_;
+  // Internal ports (indices into layout_.internal_ports) offered with an urgent constraint, as
+  // of the last compute_items; per atom, its internal ports.
+  IndexSet urgent_internal_ports_;
+  std::vector<std::vector<Index>> internal_ports_of_;
+  std::vector<Index> compounds_with_rules_;  // the only ones priority cycles are searched in
   // Per connector: enabled interaction values (indices into values_), computed bottom up. The
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
@@ -285,7 +324,14 @@ class Runtime {
   std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
   std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
-  std::vector<Item> items_;
+  // Listed lazily (see items()): the optimised scheduler on an untimed layout counts the items
+  // in item_index_ (positions: listed connectors, then internal ports) instead.
+  mutable std::vector<Item> items_;
+  mutable bool items_listed_ = true;
+  bool counts_items_ = false;
+  ItemIndex item_index_;
+  std::vector<Index> listed_position_;  // per connector: index in listed_connectors, or kNone
+  Interval items_window_;               // see items_window()
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;

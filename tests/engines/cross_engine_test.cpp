@@ -35,19 +35,43 @@ std::optional<bipc::ir::System> load_quietly(const std::filesystem::path& file,
   return std::move(result.system);
 }
 
-/// Adds a failure naming the first differing line unless both engines print the same trace
-/// for seeds 1..kCrossSeeds; verbose runs in simulated time, so the traces hold every choice.
-void expect_same_traces(const bipc::ir::System& system, engines::SimulateOptions options) {
+/// Adds a failure naming the first differing line unless the run of `options` with `engine`
+/// prints the trace of `expected`.
+void expect_same_run(const ConformanceRun& expected, engines::EngineKind engine,
+                     const bipc::ir::System& system, engines::SimulateOptions options) {
+  options.engine = engine;
+  const ConformanceRun run = run_conformance(system, options);
+  EXPECT_EQ(run.result.code, expected.result.code);
+  EXPECT_EQ(run.result.steps, expected.result.steps);
+  EXPECT_EQ(describe_difference(run.lines, expected.lines), "");
+}
+
+/// Adds a failure naming the first differing line unless the optimised engine (and, with
+/// `multithread`, the multithread one) prints the reference engine's trace for seeds
+/// 1..kCrossSeeds; verbose runs in simulated time, so the traces hold every choice. The text
+/// trace lists every item at every step; the JSON-lines trace shows only the chosen one, which
+/// the optimised and multithread engines then find without listing the items (on untimed
+/// models).
+void expect_same_traces(const bipc::ir::System& system, engines::SimulateOptions options,
+                        bool multithread = false) {
+  using engines::EngineKind;
   options.limit = kStepLimit;
   for (std::uint64_t seed = 1; seed <= kCrossSeeds; ++seed) {
     options.seed = seed;
-    options.engine = engines::EngineKind::Reference;
-    const ConformanceRun reference = run_conformance(system, options);
-    options.engine = engines::EngineKind::Optimised;
-    const ConformanceRun optimised = run_conformance(system, options);
-    EXPECT_EQ(optimised.result.code, reference.result.code) << "seed " << seed;
-    EXPECT_EQ(optimised.result.steps, reference.result.steps) << "seed " << seed;
-    EXPECT_EQ(describe_difference(optimised.lines, reference.lines), "") << "seed " << seed;
+    for (engines::TraceFormat format : {engines::TraceFormat::Text, engines::TraceFormat::Jsonl}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) +
+                   (format == engines::TraceFormat::Text ? ", text" : ", JSON lines"));
+      options.trace = format;
+      options.engine = EngineKind::Reference;
+      const ConformanceRun reference = run_conformance(system, options);
+      expect_same_run(reference, EngineKind::Optimised, system, options);
+      if (multithread && format == engines::TraceFormat::Jsonl) {
+        engines::SimulateOptions parallel = options;
+        parallel.threads = 2;
+        parallel.parallel_min_work = 0;  // atoms fire on the pool even when cheap
+        expect_same_run(reference, EngineKind::Multithread, system, parallel);
+      }
+    }
     if (::testing::Test::HasFailure()) return;
   }
 }
@@ -217,7 +241,7 @@ TEST_F(CrossEngineRandom, RandomModels) {
     SCOPED_TRACE("random model " + std::to_string(seed) + ":\n" + text);
     const std::optional<bipc::ir::System> system = load_quietly(file, "Root()");
     ASSERT_TRUE(system.has_value()) << "front end rejected the random model";
-    expect_same_traces(*system, {});
+    expect_same_traces(*system, {}, /*multithread=*/true);
     if (HasFailure()) return;
   }
 }

@@ -1,3 +1,5 @@
 # Engines cross-run on the same seed: the optimised scheduler's traces against the reference
 # engine's (uses the trace harness of conformance_tests.cmake and the generator's models).
 list(APPEND ENGINES_TEST_SOURCES cross_engine_test.cpp)
+# The optimised scheduler's counted items against the list the reference engine builds.
+list(APPEND ENGINES_TEST_SOURCES item_index_test.cpp)

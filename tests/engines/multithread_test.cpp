@@ -21,6 +21,7 @@
 #include "engines/semantics/parallel_firing.h"
 #include "engines/semantics/runtime.h"
 #include "random_model.h"
+#include "runtime_instance.h"
 #include "trace_oracles.h"
 
 namespace smcbip::tests {
@@ -106,24 +107,15 @@ engines::Externs test_externs() {
 }
 
 /// A Runtime with everything it refers to.
-struct Instance {
+struct Instance : RuntimeInstance {
   Instance(const bipc::ir::System& system, const engines::Externs& externs, unsigned threads)
-      : model(system), random(1, 0) {
-    EXPECT_EQ(engines::build_layout(system, layout), "");
-    engines::bind_functions(system, externs, strings, functions);
-    engines::RuntimeOptions options;
-    options.threads = threads;
-    options.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
-    runtime =
-        std::make_unique<engines::Runtime>(model, layout, functions, strings, out, random, options);
+      : RuntimeInstance(system, externs, options(threads)) {}
+  static engines::RuntimeOptions options(unsigned threads) {
+    engines::RuntimeOptions o;
+    o.threads = threads;
+    o.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
+    return o;
   }
-  engines::InterpretedModel model;
-  engines::Layout layout;
-  engines::StringPool strings;
-  engines::BoundFunctions functions;
-  std::ostringstream out;
-  engines::RandomStream random;
-  std::unique_ptr<engines::Runtime> runtime;
 };
 
 constexpr std::uint64_t kSteps = 12;

@@ -1,3 +1,5 @@
-# Unit tests of the stochastic area of the engines: random streams and firing-date distributions.
+# Unit tests of the stochastic area of the engines: random streams and firing-date distributions,
+# and the distribution of the scheduler's choice on untimed models.
 list(APPEND ENGINES_TEST_SOURCES distributions_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES stochastic_engine_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES shared_window_choice_test.cpp)

@@ -1,0 +1,38 @@
+// The optimised scheduler's count of enabled items per listing position, so that a step finds
+// the item it chose without listing them all.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace smcbip::engines {
+
+/// Counts of items at positions 0..n-1 (for the runtime: the listed connectors, then the
+/// internal ports, in the order Runtime::compute_items lists their items) kept in a Fenwick tree
+/// (P. M. Fenwick, "A new data structure for cumulative frequency tables", Software: Practice
+/// and Experience 24(3), 1994): changing one count and finding the position of the k-th item
+/// both take O(log n), so a step that changed a few counts costs no O(n) work.
+class ItemIndex {
+ public:
+  /// `positions` positions, every count 0.
+  void reset(std::size_t positions);
+  std::size_t positions() const { return counts_.size(); }
+  void set(std::size_t position, std::uint32_t count);
+  std::uint32_t count(std::size_t position) const { return counts_[position]; }
+  /// The sum of all counts.
+  std::size_t total() const { return total_; }
+  /// The position holding the k-th item (k < total(), counting from 0 over the positions in
+  /// order) and the item's rank among that position's items.
+  std::pair<std::size_t, std::uint32_t> find(std::size_t k) const;
+
+ private:
+  std::vector<std::uint32_t> counts_;
+  // tree_[i] (1-based): the sum of counts_ over positions [i - lowbit(i), i).
+  std::vector<std::size_t> tree_;
+  std::size_t total_ = 0;
+  std::size_t top_step_ = 0;  // the largest power of two at most positions()
+};
+
+}  // namespace smcbip::engines
