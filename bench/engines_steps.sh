@@ -5,9 +5,9 @@
 # Runs `smcbip simulate --silent --limit K` on generated rendezvous and broadcast models of 10 to
 # 10,000 atoms, on the work family (100 atoms, WORK assignments per transition) and on
 # models/channel.bip, and prints steps per second from the wall time (minus that of a 1-step run,
-# which is process start and model loading; K chosen for runs of about a second), each engine
-# also as a ratio
-# against the reference engine in the same invocation, beside the targets. It reports only:
+# which is process start and model loading; K chosen per engine for runs of about a second; the
+# steps column is the reference engine's K), each engine also as a ratio against the reference
+# engine in the same invocation, beside the targets. It reports only:
 # timings on a shared machine are noisy (the load average is printed), so it never fails on them.
 set -euo pipefail
 
@@ -45,14 +45,15 @@ run_seconds() {
   awk -v s="$start" -v e="$end" 'BEGIN { printf "%.6f\n", e - s }'
 }
 
-# Steps per run such that the reference engine takes about target_seconds beyond start-up: the
+# Steps per run such that the engine (options $3...) takes about target_seconds beyond start-up: the
 # start-up is a run of 1 step; probes of 4 times more steps until one takes a tenth of the
 # target; then scaled. At least 100 steps, at most 50 million.
 choose_limit() {
   local model=$1 root=$2 start_up probe=100 seconds
-  start_up=$(run_seconds "$model" "$root" 1) || return 1
+  shift 2
+  start_up=$(run_seconds "$model" "$root" 1 "$@") || return 1
   for (( ; ; probe *= 4)); do
-    seconds=$(run_seconds "$model" "$root" "$probe") || return 1
+    seconds=$(run_seconds "$model" "$root" "$probe" "$@") || return 1
     if awk -v s="$seconds" -v a="$start_up" -v t="$target_seconds" -v p="$probe" \
       'BEGIN { exit !(s - a >= t / 10 || p >= 5e7) }'; then
       break
@@ -88,6 +89,15 @@ steps_per_second() {
     'BEGIN { d = s - a; printf "%.0f\n", (d > 0 ? (k - 1) / d : 0) }'
 }
 
+# As steps_per_second, with a step count chosen for this engine (a faster engine runs more
+# steps, so that its time is not lost in the noise of start-up).
+engine_steps_per_second() {
+  local model=$1 limit
+  shift
+  limit=$(choose_limit "$model" 'Top()' "$@") || return 1
+  steps_per_second "$model" 'Top()' "$limit" "$@"
+}
+
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }
 
 echo "engines_steps: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg);" \
@@ -104,9 +114,8 @@ measure() {
     return 0
   fi
   ref=$(steps_per_second "$model" 'Top()' "$limit" --engine reference) || return 1
-  opt=$(steps_per_second "$model" 'Top()' "$limit" --engine optimised) || return 1
-  mt=$(steps_per_second "$model" 'Top()' "$limit" --engine multithread --threads "$threads") ||
-    return 1
+  opt=$(engine_steps_per_second "$model" --engine optimised) || return 1
+  mt=$(engine_steps_per_second "$model" --engine multithread --threads "$threads") || return 1
   figures["$family $n"]="$ref $opt $mt"
   printf '%-10s %6d %9d %13d %13d %13d %8s %8s\n' "$family" "$n" "$limit" "$ref" "$opt" "$mt" \
     "$(ratio "$opt" "$ref")" "$(ratio "$mt" "$ref")"
