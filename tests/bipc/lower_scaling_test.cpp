@@ -1,7 +1,7 @@
-// Instantiation stays linear: a generated 10,000-atom chain lowers well under a second.
+// Instantiation at scale: a generated 10,000-atom chain lowers completely. Its speed is measured
+// by bench/frontend_scaling.sh, not here: timings in unit tests fail on loaded or sanitized runs.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <sstream>
 #include <string>
 
@@ -42,7 +42,7 @@ std::string chain_model(int atoms) {
   return out.str();
 }
 
-TEST(LowerScaling, TenThousandAtomChainInstantiatesQuickly) {
+TEST(LowerScaling, TenThousandAtomChainInstantiates) {
   constexpr int kAtoms = 10000;
   const std::string text = chain_model(kAtoms);
   auto lowered = std::make_unique<lower_test::Lowered>();
@@ -55,10 +55,7 @@ TEST(LowerScaling, TenThousandAtomChainInstantiatesQuickly) {
   std::optional<ast::ComponentDecl> root = parse_root("Top()", file, lowered->diags);
   ASSERT_TRUE(root && check_root(lowered->model, *root, lowered->diags)) << lowered->messages();
 
-  const auto start = std::chrono::steady_clock::now();
   std::optional<ir::System> system = instantiate(lowered->model, *root, lowered->diags);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   ASSERT_TRUE(system) << lowered->messages();
   EXPECT_EQ(system->atoms.size(), static_cast<std::size_t>(kAtoms));
@@ -67,8 +64,6 @@ TEST(LowerScaling, TenThousandAtomChainInstantiatesQuickly) {
   EXPECT_EQ(system->connector_types.size(), 1u);
   EXPECT_EQ(system->atoms.back().params.at(0).i, kAtoms - 1);
   EXPECT_EQ(system->compounds[0].priorities.size(), static_cast<std::size_t>((kAtoms - 1) / 2));
-  // Typically a few milliseconds; the bound leaves room for sanitizer and debug builds.
-  EXPECT_LT(seconds, 1.0) << "instantiate took " << seconds << " s";
 }
 
 }  // namespace
