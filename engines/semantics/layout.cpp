@@ -231,6 +231,9 @@ std::string build_layout(const System& system, Layout& layout) {
       }
       defined.push_back(d);
     }
+    PortSet required = ~PortSet{0};
+    for (const DefinedInteraction& d : defined) required &= d.ports;
+    layout.required_ports.push_back(defined.empty() ? 0 : required);
     layout.defined.push_back(std::move(defined));
     // Top level: not bound by another connector of its own compound.
     bool top = true;

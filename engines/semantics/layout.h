@@ -41,6 +41,7 @@ struct Layout {
   std::vector<Val> params;                               // atom parameters, flattened
   std::vector<TimeValue> clock_units;                    // per flattened clock
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
+  std::vector<PortSet> required_ports;   // per connector: the ports every defined one contains
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound
   std::vector<Index> listed_connectors;  // connectors without export, in listing order
   std::vector<std::pair<Index, Index>> internal_ports;   // (atom, port) in listing order

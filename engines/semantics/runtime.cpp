@@ -129,6 +129,7 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     port_offset_.push_back(port_values_.size());
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
+  index_required_offers();
   atom_invariant_.assign(system.atoms.size(), Interval::all());
   bounds_time_.assign(system.atoms.size(), 0);
   if (options.threads > 1) {
@@ -604,11 +605,58 @@ Index Runtime::acquire_value() {
   return slot;
 }
 
+void Runtime::index_required_offers() {
+  required_offers_.resize(system_.connectors.size());
+  has_sub_connectors_.assign(system_.connectors.size(), 0);
+  for (Index k = 0; k < system_.connectors.size(); ++k) {
+    const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
+    for (std::size_t i = 0; i < connector.bound.size(); ++i) {
+      bool atoms_only = true;
+      for (const bipc::ir::PortRef& ref : connector.bound[i]) {
+        atoms_only = atoms_only && ref.kind == bipc::ir::PortRef::Kind::Atom;
+      }
+      if (!atoms_only) has_sub_connectors_[k] = 1;
+      if (!atoms_only || !(layout_.required_ports[k] & (PortSet{1} << i))) continue;
+      for (const bipc::ir::PortRef& ref : connector.bound[i]) {
+        required_offers_[k].push_back({ref.instance, port_offset_[ref.instance] + ref.port, false});
+      }
+      if (!required_offers_[k].empty()) required_offers_[k].back().ends_group = true;
+    }
+  }
+}
+
+bool Runtime::misses_required_atom_port(Index k) const {
+  bool offered = false;
+  for (const RequiredOffer& r : required_offers_[k]) {
+    offered = offered || (!state_.resume_pending[r.atom] && port_values_[r.port_value]);
+    if (!r.ends_group) continue;
+    if (!offered) return true;
+    offered = false;
+  }
+  return false;
+}
+
+void Runtime::compute_sub_connectors(Index k) {
+  if (!has_sub_connectors_[k]) return;
+  for (const auto& refs : system_.connectors[k].bound) {
+    for (const bipc::ir::PortRef& ref : refs) {
+      if (ref.kind == bipc::ir::PortRef::Kind::Connector) compute_connector(ref.instance);
+    }
+  }
+}
+
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   // Connectors binding this one are stale too, so nothing refers to its old values any more.
   free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
   connector_values_[k].clear();
+  // Most connectors of a state lack an offer that all their interactions need: they have no
+  // interactions, found without gathering offers. Sub-connectors are computed all the same, in
+  // the usual order, as their code may have effects (extern calls) or fail.
+  if (misses_required_atom_port(k)) {
+    compute_sub_connectors(k);
+    return;
+  }
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   const auto& type = system_.connector_types[connector.type];
   const std::size_t n = connector.bound.size();

@@ -192,6 +192,13 @@ class Runtime {
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
+  /// Fills required_offers_ and has_sub_connectors_.
+  void index_required_offers();
+  /// Whether a port every interaction of the connector contains binds only atom ports, none of
+  /// which offers anything: then the connector has no interaction.
+  bool misses_required_atom_port(Index connector) const;
+  /// Computes the connectors bound to the connector's ports, in port order.
+  void compute_sub_connectors(Index connector);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
   Index acquire_value();
   void begin_values(bool full);
@@ -252,6 +259,16 @@ class Runtime {
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
   std::vector<IndexList> connector_values_;
+  // Per connector: the atom ports bound to its port parameters that every defined interaction
+  // contains (parameters binding atom ports only), parameter by parameter; and whether a
+  // parameter binds a sub-connector.
+  struct RequiredOffer {
+    Index atom = 0;
+    std::size_t port_value = 0;  // index into port_values_
+    bool ends_group = false;     // the last atom port of its parameter
+  };
+  std::vector<std::vector<RequiredOffer>> required_offers_;
+  std::vector<std::uint8_t> has_sub_connectors_;
   std::vector<InteractionValue> values_;
   std::vector<Index> free_values_;
   // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
