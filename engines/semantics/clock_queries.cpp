@@ -24,13 +24,12 @@ TimeValue Runtime::clock_reaches(Index atom, Index clock, double value) const {
   return state_.now + static_cast<TimeValue>(delay);
 }
 
-std::vector<double> Runtime::stochastic_params(Index atom, Index port) {
+void Runtime::stochastic_params(Index atom, Index port, std::vector<double>& out) {
   const auto& stochastic = system_.atom_types[system_.atoms[atom].type].ports[port].stochastic;
-  std::vector<double> params;
-  if (!stochastic) return params;
+  out.clear();
+  if (!stochastic) return;
   const Frame f = atom_frame(atom);
-  for (const bipc::ir::Code& code : stochastic->params) params.push_back(eval_.evaluate(code, f).f);
-  return params;
+  for (const bipc::ir::Code& code : stochastic->params) out.push_back(eval_.evaluate(code, f).f);
 }
 
 }  // namespace smcbip::engines

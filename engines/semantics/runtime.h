@@ -152,8 +152,9 @@ class Runtime {
   double clock_value(Index atom, Index clock, TimeValue at) const;
   /// The first date from `now` at which that clock reaches `value` (kPlusInfinity if never).
   TimeValue clock_reaches(Index atom, Index clock, double value) const;
-  /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now.
-  std::vector<double> stochastic_params(Index atom, Index port);
+  /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now, in `out`
+  /// (a buffer the caller reuses).
+  void stochastic_params(Index atom, Index port, std::vector<double>& out);
   /// `holder.port(d=1;)` entries of an interaction, as the trace prints them.
   std::string format_ports(const InteractionValue& value) const;
   /// The violated deadlines at `now` (real time), as trace lines without the prefix.

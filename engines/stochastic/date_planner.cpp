@@ -56,7 +56,14 @@ bool has_stochastic_ports(const bipc::ir::System& system) {
 
 DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributions& custom,
                          RandomStream& random, TimeValue unbounded_mean)
-    : system_(system), random_(random), unbounded_mean_(unbounded_mean), custom_(custom) {}
+    : system_(system), random_(random), unbounded_mean_(unbounded_mean), custom_(custom) {
+  for (const bipc::ir::AtomInstance& atom : system.atoms) {
+    first_port_.push_back(stochastic_ports_.size());
+    for (const bipc::ir::Port& port : system.atom_types[atom.type].ports) {
+      stochastic_ports_.push_back(port.stochastic ? 1 : 0);
+    }
+  }
+}
 
 std::size_t DatePlanner::KeyHash::operator()(std::span<const std::uint32_t> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ull;
@@ -120,9 +127,7 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
 
 std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
   for (const auto& [atom, port] : ports_) {
-    if (system_.atom_types[system_.atoms[atom].type].ports[port].stochastic) {
-      return std::pair{atom, port};
-    }
+    if (stochastic_ports_[first_port_[atom] + port]) return std::pair{atom, port};
   }
   return std::nullopt;
 }
@@ -149,26 +154,28 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
                                   TimeValue& date, std::string& error) {
   const auto& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Stochastic& annotation = *type.ports[port].stochastic;
-  const std::vector<double> params = runtime.stochastic_params(atom, port);
+  runtime.stochastic_params(atom, port, params_);
   const EmpiricalCdf* custom = nullptr;
   if (annotation.distribution == bipc::ir::Distribution::Custom) {
     custom = &custom_.at(annotation.custom_file);
   }
-  const std::string where = runtime.layout().atom_names[atom] + "." + type.ports[port].name;
-  auto made = DateDistribution::make(annotation.distribution, params, custom);
+  // Only error messages name the port: no string is built for a successful draw.
+  auto where = [&] { return runtime.layout().atom_names[atom] + "." + type.ports[port].name; };
+  auto made = DateDistribution::make(annotation.distribution, params_, custom);
   if (auto* message = std::get_if<std::string>(&made)) {
-    error = "@stochastic distribution of " + where + ": " + *message;
+    error = "@stochastic distribution of " + where() + ": " + *message;
     return false;
   }
   const DateDistribution& distribution = std::get<DateDistribution>(made);
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
+  const double below = distribution.cdf(lower);
   double sample = 0.0;
-  if (distribution.cdf(lower) > 0.0) {
-    const std::optional<double> above = distribution.sample_above(lower, random_);
+  if (below > 0.0) {
+    const std::optional<double> above = distribution.sample_above(lower, below, random_);
     if (!above) {
-      error = "missed support: " + where + " draws from " + distribution.describe() +
+      error = "missed support: " + where() + " draws from " + distribution.describe() +
               " but its clock " + type.clocks[annotation.clock].name + " is already at " +
               std::to_string(lower) + ", beyond every date of the distribution";
       return false;

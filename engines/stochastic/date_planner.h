@@ -91,6 +91,10 @@ class DatePlanner {
       1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
   Key key_;
   std::vector<std::pair<Index, Index>> ports_;
+  std::vector<double> params_;  // of the @stochastic annotation being drawn from
+  // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
+  std::vector<std::size_t> first_port_;
+  std::vector<std::uint8_t> stochastic_ports_;
 };
 
 }  // namespace smcbip::engines
