@@ -69,8 +69,7 @@ void ConnectorCache::touch_atom(Index atom) {
   touched_list_.push_back(atom);
 }
 
-void ConnectorCache::mark_stale(Index k) {
-  if (stale_[k]) return;
+void ConnectorCache::mark_stale_with_binders(Index k) {
   stale_[k] = 1;
   stale_list_.push_back(k);
   for (Index parent : parents_[k]) mark_stale(parent);

@@ -60,7 +60,10 @@ class ConnectorCache {
   void end();
 
  private:
-  void mark_stale(bipc::ir::Index connector);
+  void mark_stale(bipc::ir::Index connector) {
+    if (!stale_[connector]) mark_stale_with_binders(connector);
+  }
+  void mark_stale_with_binders(bipc::ir::Index connector);
 
   const bipc::ir::System& system_;
   std::vector<std::vector<bipc::ir::Index>> atom_connectors_;  // per atom: connectors binding it

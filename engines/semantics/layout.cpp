@@ -189,6 +189,13 @@ std::optional<std::vector<PortSet>> defined_interactions(const std::vector<Defin
 
 std::string build_layout(const System& system, Layout& layout) {
   layout = Layout{};
+  for (const bipc::ir::AtomType& type : system.atom_types) {
+    auto& labelled = layout.labelled_transitions.emplace_back();
+    auto& internal = layout.internal_transitions.emplace_back();
+    for (Index t = 0; t < type.transitions.size(); ++t) {
+      (type.transitions[t].port == bipc::ir::kNone ? internal : labelled).push_back(t);
+    }
+  }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {
     const bipc::ir::AtomType& type = system.atom_types[atom.type];
     layout.atom_data.push_back(layout.data_size);

@@ -38,8 +38,10 @@ struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets
   std::vector<std::size_t> connector_data;                                    // offsets
   std::size_t data_size = 0, place_count = 0, clock_count = 0;
-  std::vector<Val> params;                               // atom parameters, flattened
-  std::vector<TimeValue> clock_units;                    // per flattened clock
+  std::vector<Val> params;             // atom parameters, flattened
+  std::vector<TimeValue> clock_units;  // per flattened clock
+  // Per atom type, in declaration order: transitions labelled by a port, internal ones.
+  std::vector<std::vector<Index>> labelled_transitions, internal_transitions;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   std::vector<PortSet> required_ports;   // per connector: the ports every defined one contains
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound

@@ -130,6 +130,9 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
   index_required_offers();
+  for (const std::vector<PriorityRule>& rules : layout_.rules) {
+    has_priority_rules_ = has_priority_rules_ || !rules.empty();
+  }
   atom_invariant_.assign(system.atoms.size(), Interval::all());
   bounds_time_.assign(system.atoms.size(), 0);
   if (options.threads > 1) {
@@ -232,6 +235,8 @@ bool Runtime::initialize() {
 
 bool Runtime::check_invariants(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  // Such an atom's invariant stays `all` (its time bound is noted where its resume changes).
+  if (type.invariants.empty()) return true;
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
   if (!s.on_worker) note_time_bound(atom);
@@ -296,11 +301,12 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
 bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
+  const std::vector<Index>& internal = layout_.internal_transitions[system_.atoms[atom].type];
+  if (internal.empty()) return true;
   for (;;) {
     Index enabled = kNone;
-    for (Index t = 0; t < type.transitions.size(); ++t) {
+    for (Index t : internal) {
       const bipc::ir::Transition& tr = type.transitions[t];
-      if (tr.port != kNone) continue;
       bool marked = true;
       for (Index p : tr.from) marked = marked && state_.marking[base + p];
       if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
@@ -322,9 +328,8 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Frame f = atom_frame(s, atom);
-  for (Index t = 0; t < type.transitions.size(); ++t) {
+  for (Index t : layout_.labelled_transitions[system_.atoms[atom].type]) {
     const bipc::ir::Transition& tr = type.transitions[t];
-    if (tr.port == kNone) continue;
     bool marked = true;
     for (Index p : tr.from) marked = marked && state_.marking[base + p];
     if (!marked) continue;
@@ -495,6 +500,7 @@ std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const
 }
 
 bool Runtime::check_compound_priority_cycles() {
+  if (!has_priority_rules_) return true;
   acyclic_rule_sets_.resize(layout_.rules.size());
   for (std::size_t compound = 0; compound < layout_.rules.size(); ++compound) {
     const std::vector<PriorityRule>& rules = layout_.rules[compound];
@@ -647,9 +653,7 @@ void Runtime::compute_sub_connectors(Index k) {
 
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
-  // Connectors binding this one are stale too, so nothing refers to its old values any more.
-  free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
-  connector_values_[k].clear();
+  release_values(k);
   // Most connectors of a state lack an offer that all their interactions need: they have no
   // interactions, found without gathering offers. Sub-connectors are computed all the same, in
   // the usual order, as their code may have effects (extern calls) or fail.
@@ -657,20 +661,34 @@ void Runtime::compute_connector(Index k) {
     compute_sub_connectors(k);
     return;
   }
-  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
-  const auto& type = system_.connector_types[connector.type];
-  const std::size_t n = connector.bound.size();
-  // Scratch per recursion depth (sub-connectors are computed from inside this loop).
+  compute_interactions(k);
+}
+
+void Runtime::release_values(Index k) {
+  // Connectors binding this one are stale too, so nothing refers to its old values any more.
+  for (Index v : connector_values_[k]) free_values_.push_back(v);
+  connector_values_[k].clear();
+}
+
+void Runtime::compute_interactions(Index k) {
+  // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
   if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
   ConnectorScratch& scratch = scratch_[scratch_depth_];
   const struct DepthGuard {
     std::size_t& depth;
     ~DepthGuard() { --depth; }
   } depth_guard{++scratch_depth_};
-  std::vector<std::vector<PortValue>>& offers = scratch.offers;
+  gather_offers(k, scratch.offers);
+  const auto defined = static_cast<std::uint32_t>(layout_.defined[k].size());
+  for (std::uint32_t d = 0; d < defined; ++d) add_interactions(k, d, scratch);
+}
+
+void Runtime::gather_offers(Index k, std::vector<std::vector<PortValue>>& offers) {
+  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
+  const std::size_t n = connector.bound.size();
   if (offers.size() < n) offers.resize(n);
-  for (std::size_t i = 0; i < n; ++i) offers[i].clear();
   for (std::size_t i = 0; i < n; ++i) {
+    offers[i].clear();
     for (const bipc::ir::PortRef& ref : connector.bound[i]) {
       if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
         if (state_.resume_pending[ref.instance]) continue;
@@ -679,75 +697,76 @@ void Runtime::compute_connector(Index k) {
         continue;
       }
       compute_connector(ref.instance);
+      const bool maximal_only = connector.bound_through_compound[i];
       for (Index sub : connector_values_[ref.instance]) {
         const InteractionValue& sv = values_[sub];
-        const Constraint& c = connector.bound_through_compound[i] ? sv.after : sv.raw;
-        if (connector.bound_through_compound[i] && c.interval.empty()) continue;
+        const Constraint& c = maximal_only ? sv.after : sv.raw;
+        if (maximal_only && c.interval.empty()) continue;
         offers[i].push_back({false, 0, 0, sub, c});
       }
     }
   }
-  IndexList& result = connector_values_[k];
-  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
-  for (std::uint32_t d = 0; d < defined.size(); ++d) {
-    const PortSet ports = defined[d].ports;
-    std::vector<std::size_t>& members = scratch.members;
-    members.clear();
-    bool possible = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!(ports & (PortSet{1} << i))) continue;
-      members.push_back(i);
-      possible = possible && !offers[i].empty();
-    }
-    if (!possible) continue;
-    const bipc::ir::InteractionCode* code =
-        defined[d].code >= 0 ? &type.interactions[static_cast<std::size_t>(defined[d].code)]
-                             : nullptr;
-    std::vector<std::size_t>& pick = scratch.pick;
-    pick.assign(members.size(), 0);
-    for (;;) {
-      const Index slot = acquire_value();
-      InteractionValue& value = values_[slot];
-      value.connector = k;
-      value.defined = d;
-      value.ports = ports;
-      value.raw = Constraint{};
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        const PortValue& pv = offers[members[m]][pick[m]];
-        value.choice.push_back(pv);
-        value.raw = intersect(value.raw, pv.constraint);
-      }
-      if (!value.raw.interval.empty()) {
-        value.data.assign(
-            state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
-            state_.data.begin() +
-                static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
-        const PortContext context{this, &value};
-        const Frame f = connector_frame(value, context, state_.now);
-        if (!code || eval_.holds(code->guard, f)) {
-          if (code) eval_.execute(code->up, f);
-          value.after = value.raw;
-          result.push_back(slot);
-        } else {
-          free_values_.push_back(slot);
-        }
-      } else {
-        free_values_.push_back(slot);
-      }
-      // Next combination: the last port varies fastest (first port outermost).
-      std::size_t m = members.size();
-      while (m > 0) {
-        --m;
-        if (++pick[m] < offers[members[m]].size()) break;
-        pick[m] = 0;
-        if (m == 0) {
-          m = members.size() + 1;
-          break;
-        }
-      }
-      if (members.empty() || m == members.size() + 1) break;
-    }
+}
+
+void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scratch) {
+  const PortSet ports = layout_.defined[k][d].ports;
+  const std::vector<std::vector<PortValue>>& offers = scratch.offers;
+  std::vector<std::size_t>& members = scratch.members;
+  members.clear();
+  for (PortSet left = ports; left != 0; left &= left - 1) {
+    const auto i = static_cast<std::size_t>(std::countr_zero(left));
+    if (offers[i].empty()) return;
+    members.push_back(i);
   }
+  std::vector<std::size_t>& pick = scratch.pick;
+  pick.assign(members.size(), 0);
+  for (;;) {
+    add_interaction(k, d, scratch);
+    // Next combination: the last port varies fastest (first port outermost).
+    std::size_t m = members.size();
+    while (m > 0) {
+      --m;
+      if (++pick[m] < offers[members[m]].size()) break;
+      pick[m] = 0;
+      if (m == 0) return;
+    }
+    if (members.empty()) return;
+  }
+}
+
+void Runtime::add_interaction(Index k, std::uint32_t d, const ConnectorScratch& scratch) {
+  const Index slot = acquire_value();
+  InteractionValue& value = values_[slot];
+  value.connector = k;
+  value.defined = d;
+  value.ports = layout_.defined[k][d].ports;
+  value.raw = Constraint{};
+  for (std::size_t m = 0; m < scratch.members.size(); ++m) {
+    const PortValue& pv = scratch.offers[scratch.members[m]][scratch.pick[m]];
+    value.choice.push_back(pv);
+    value.raw = intersect(value.raw, pv.constraint);
+  }
+  if (!value.raw.interval.empty() && connector_code_allows(value)) {
+    value.after = value.raw;
+    connector_values_[k].push_back(slot);
+  } else {
+    free_values_.push_back(slot);
+  }
+}
+
+bool Runtime::connector_code_allows(InteractionValue& value) {
+  const Index k = value.connector;
+  const auto& type = system_.connector_types[system_.connectors[k].type];
+  const auto data = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]);
+  value.data.assign(data, data + static_cast<std::ptrdiff_t>(type.data.size()));
+  const int code = layout_.defined[k][value.defined].code;
+  if (code < 0) return true;
+  const bipc::ir::InteractionCode& interaction = type.interactions[static_cast<std::size_t>(code)];
+  const PortContext context{this, &value};
+  const Frame f = connector_frame(value, context, state_.now);
+  if (!eval_.holds(interaction.guard, f)) return false;
+  eval_.execute(interaction.up, f);
+  return true;
 }
 
 void Runtime::apply_priorities(InteractionValue& value, Index k) {
@@ -809,7 +828,8 @@ void Runtime::recompute_priorities(Index k) {
         urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
   }
   cache_.set_urgent(k, urgent);
-  cache_.priorities_changed(k);
+  // A stale connector's binders are all stale already (ConnectorCache::begin).
+  if (!cache_.stale(k)) cache_.priorities_changed(k);
 }
 
 void Runtime::compute_compound(Index c) {

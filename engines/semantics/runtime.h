@@ -200,6 +200,19 @@ class Runtime {
   bool misses_required_atom_port(Index connector) const;
   /// Computes the connectors bound to the connector's ports, in port order.
   void compute_sub_connectors(Index connector);
+  /// Frees the connector's values of the last computation.
+  void release_values(Index connector);
+  struct ConnectorScratch;
+  /// The connector's interaction values, from its ports' offers.
+  void compute_interactions(Index connector);
+  /// Per port parameter, the offers of the atom ports and sub-connectors it binds.
+  void gather_offers(Index connector, std::vector<std::vector<PortValue>>& offers);
+  /// The values of defined interaction `d`: one per combination of its ports' offers.
+  void add_interactions(Index connector, std::uint32_t d, ConnectorScratch& scratch);
+  /// The value of the combination of offers `scratch.pick`, if its constraint and guard allow.
+  void add_interaction(Index connector, std::uint32_t d, const ConnectorScratch& scratch);
+  /// Copies the connector's data into the value and runs the guard, then `up` if it holds.
+  bool connector_code_allows(InteractionValue& value);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
   Index acquire_value();
   void begin_values(bool full);
@@ -282,6 +295,7 @@ class Runtime {
   ConnectorCache cache_;
   std::vector<Item> items_;
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
+  bool has_priority_rules_ = false;            // whether some compound has priority rules
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
   // Multithread scheduler only (threads > 1): the pool and per-thread evaluators.
