@@ -130,6 +130,12 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
     port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
   }
   index_required_offers();
+  for (Index a = 0; a < system.atoms.size(); ++a) {
+    const bool has_clocks = !system.atom_types[system.atoms[a].type].clocks.empty();
+    atom_slots_.push_back({layout.atom_data[a], layout.params.data() + layout.atom_params[a],
+                           layout.atom_clocks[a], layout.clock_units.data() + layout.atom_clocks[a],
+                           has_clocks});
+  }
   for (const std::vector<PriorityRule>& rules : layout_.rules) {
     has_priority_rules_ = has_priority_rules_ || !rules.empty();
   }
@@ -168,12 +174,12 @@ Frame Runtime::atom_frame(AtomScratch s, Index atom) {
 }
 
 Frame Runtime::atom_frame(Index atom) {
+  const AtomSlots& slots = atom_slots_[atom];
   Frame f;
-  f.atom_data = state_.data.data() + layout_.atom_data[atom];
-  f.atom_params = layout_.params.data() + layout_.atom_params[atom];
-  const bool has_clocks = !system_.atom_types[system_.atoms[atom].type].clocks.empty();
-  f.clocks = has_clocks ? state_.clocks.data() + layout_.atom_clocks[atom] : nullptr;
-  f.clock_units = layout_.clock_units.data() + layout_.atom_clocks[atom];
+  f.atom_data = state_.data.data() + slots.data;
+  f.atom_params = slots.params;
+  f.clocks = slots.has_clocks ? state_.clocks.data() + slots.clocks : nullptr;
+  f.clock_units = slots.clock_units;
   f.instance_slot = &RuntimeDetail::instance_slot;
   f.instance_context = this;
   f.now = state_.now;
@@ -819,8 +825,13 @@ void Runtime::begin_values(bool full) {
 }
 
 void Runtime::recompute_priorities(Index k) {
-  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
   cache_.clear_time_dependent(k);
+  if (connector_values_[k].empty()) {
+    cache_.set_urgent(k, false);
+    if (!cache_.stale(k)) cache_.priorities_changed(k);
+    return;
+  }
+  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
   bool urgent = false;
   for (Index v : connector_values_[k]) {
     apply_priorities(values_[v], k);

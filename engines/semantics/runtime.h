@@ -260,6 +260,15 @@ class Runtime {
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
+  // Per atom: where its slots are (atom_frame).
+  struct AtomSlots {
+    std::size_t data = 0;
+    const Val* params = nullptr;
+    std::size_t clocks = 0;
+    const TimeValue* clock_units = nullptr;
+    bool has_clocks = false;
+  };
+  std::vector<AtomSlots> atom_slots_;
   // Per atom port (flattened by atom, port): its offer, if any.
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
