@@ -65,30 +65,30 @@ DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributio
   }
 }
 
-std::size_t DatePlanner::KeyHash::operator()(std::span<const std::uint32_t> key) const {
+std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, Index>> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (std::uint32_t x : key) h = (h ^ x) * 0xff51afd7ed558ccdull;
+  for (const auto& [first, second] : key) {
+    h = (h ^ first) * 0xff51afd7ed558ccdull;
+    h = (h ^ second) * 0xff51afd7ed558ccdull;
+  }
   return static_cast<std::size_t>(h ^ (h >> 32));
 }
 
 void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
   key_.clear();
-  ports_.clear();
-  key_.push_back(static_cast<std::uint32_t>(item.kind));
   if (item.kind == Item::Kind::Interaction) {
     const InteractionValue& value = runtime.values()[item.value];
-    key_.push_back(value.connector);
-    key_.push_back(value.defined);
+    key_.emplace_back(static_cast<Index>(item.kind), value.connector);
+    key_.emplace_back(value.defined, 0);
+  } else {
+    key_.emplace_back(static_cast<Index>(item.kind), 0);
   }
-  runtime.append_atom_ports(item, ports_);
-  for (const auto& [atom, port] : ports_) {
-    key_.push_back(atom);
-    key_.push_back(port);
-  }
+  ports_begin_ = key_.size();
+  runtime.append_atom_ports(item, key_);
 }
 
 DatePlanner::Planned& DatePlanner::plan_of() {
-  auto found = plans_.find(std::span<const std::uint32_t>(key_));
+  auto found = plans_.find(std::span<const std::pair<Index, Index>>(key_));
   if (found == plans_.end()) found = plans_.emplace(key_, Planned{}).first;
   return found->second;
 }
@@ -126,8 +126,9 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
 }
 
 std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
-  for (const auto& [atom, port] : ports_) {
-    if (stochastic_ports_[first_port_[atom] + port]) return std::pair{atom, port};
+  for (std::size_t i = ports_begin_; i < key_.size(); ++i) {
+    const auto& [atom, port] = key_[i];
+    if (stochastic_ports_[first_port_[atom] + port]) return key_[i];
   }
   return std::nullopt;
 }

@@ -51,7 +51,9 @@ class DatePlanner {
   void replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates);
 
  private:
-  using Key = std::vector<std::uint32_t>;
+  /// An item's identity: (kind, connector), (defined interaction, 0) for an interaction, then
+  /// the (atom, port) pairs it fires.
+  using Key = std::vector<std::pair<Index, Index>>;
   struct Planned {
     Constraint offered;
     TimeValue date = 0;
@@ -60,18 +62,19 @@ class DatePlanner {
   // Transparent: items are looked up by a span over a reused buffer, without allocating.
   struct KeyHash {
     using is_transparent = void;
-    std::size_t operator()(std::span<const std::uint32_t> key) const;
+    std::size_t operator()(std::span<const std::pair<Index, Index>> key) const;
   };
   struct KeyEqual {
     using is_transparent = void;
-    bool operator()(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) const {
+    bool operator()(std::span<const std::pair<Index, Index>> a,
+                    std::span<const std::pair<Index, Index>> b) const {
       return std::equal(a.begin(), a.end(), b.begin(), b.end());
     }
   };
   using Plans = std::unordered_map<Key, Planned, KeyHash, KeyEqual>;
 
   /// Identifies an item across steps: its connector (or atom port) and the atom ports it fires;
-  /// written to key_, the item's atom ports to ports_.
+  /// written to key_, whose atom ports start at ports_begin_.
   void key_of(const Runtime& runtime, const Item& item);
   /// The plan of the item whose key is in key_ (created empty when new).
   Planned& plan_of();
@@ -79,7 +82,7 @@ class DatePlanner {
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
-  /// The @stochastic port among ports_ (at most one per interaction), if any.
+  /// The @stochastic port among the key's atom ports (at most one per interaction), if any.
   std::optional<std::pair<Index, Index>> stochastic_port() const;
 
   const bipc::ir::System& system_;
@@ -90,7 +93,7 @@ class DatePlanner {
   std::uint64_t generation_ =
       1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
   Key key_;
-  std::vector<std::pair<Index, Index>> ports_;
+  std::size_t ports_begin_ = 0;
   std::vector<double> params_;  // of the @stochastic annotation being drawn from
   // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
   std::vector<std::size_t> first_port_;
