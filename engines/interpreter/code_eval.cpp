@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "engines/interpreter/detail/time_sets.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -121,6 +123,9 @@ Val arithmetic(Op op, ValueKind kind, Val a, Val b) {
 // ---------------------------------------------------------------------------------------------
 // Time sets. A clock-dependent value is linear in the delay d (ns) from now: a + b*d.
 
+using detail::relative_set;
+using detail::shift;
+using detail::solve;
 using detail::TimedItem;
 
 double as_double(const TimedItem& item, ValueKind kind) {
@@ -128,60 +133,8 @@ double as_double(const TimedItem& item, ValueKind kind) {
   return kind == ValueKind::Float ? item.value.f : static_cast<double>(item.value.i);
 }
 
-Interval relative_set(bool holds) { return holds ? Interval::all() : Interval::none(); }
-
 Interval as_set(const TimedItem& item) {
   return item.kind == TimedItem::Kind::Set ? item.set : relative_set(item.value.b);
-}
-
-/// {d | a + b*d op c}, on integer nanoseconds.
-Interval solve(Op op, double a, double b, double c) {
-  if (b == 0.0) {
-    const bool holds = op == Op::Lt   ? a < c
-                       : op == Op::Le ? a <= c
-                       : op == Op::Gt ? a > c
-                       : op == Op::Ge ? a >= c
-                       : op == Op::Eq ? a == c
-                                      : a != c;
-    return relative_set(holds);
-  }
-  const double x = (c - a) / b;
-  if (b < 0.0) {
-    // Dividing by a negative slope turns the comparison around.
-    op = op == Op::Lt   ? Op::Gt
-         : op == Op::Le ? Op::Ge
-         : op == Op::Gt ? Op::Lt
-         : op == Op::Ge ? Op::Le
-                        : op;
-  }
-  const double limit = 9.0e18;
-  if (x > limit) return op == Op::Lt || op == Op::Le ? Interval::all() : Interval::none();
-  if (x < -limit) return op == Op::Gt || op == Op::Ge ? Interval::all() : Interval::none();
-  const double nearest = std::nearbyint(x);
-  const bool integral = std::fabs(x - nearest) <= 1e-6 * std::max(1.0, std::fabs(x));
-  const auto at = static_cast<TimeValue>(nearest);
-  Interval result = Interval::all();
-  switch (op) {
-    case Op::Lt:
-      if (integral) return {kMinusInfinity, at, false, true};
-      result.right = static_cast<TimeValue>(std::floor(x));
-      return result;
-    case Op::Le:
-      result.right = integral ? at : static_cast<TimeValue>(std::floor(x));
-      return result;
-    case Op::Gt:
-      if (integral) return {at, kPlusInfinity, true, false};
-      result.left = static_cast<TimeValue>(std::ceil(x));
-      return result;
-    case Op::Ge:
-      result.left = integral ? at : static_cast<TimeValue>(std::ceil(x));
-      return result;
-    case Op::Eq:
-      return integral ? Interval::point(at) : Interval::none();
-    default:
-      // `!=` over clocks is refused by the checker; keep the dates where it holds now.
-      return Interval::all();
-  }
 }
 
 Interval hull(const Interval& x, const Interval& y) {
@@ -196,13 +149,6 @@ Interval hull(const Interval& x, const Interval& y) {
     r.right = y.right;
     r.right_open = y.right_open;
   }
-  return r;
-}
-
-Interval shift(const Interval& set, TimeValue now) {
-  Interval r = set;
-  if (r.left != kMinusInfinity) r.left += now;
-  if (r.right != kPlusInfinity) r.right += now;
   return r;
 }
 

@@ -192,8 +192,10 @@ std::string build_layout(const System& system, Layout& layout) {
   for (const bipc::ir::AtomType& type : system.atom_types) {
     auto& labelled = layout.labelled_transitions.emplace_back();
     auto& internal = layout.internal_transitions.emplace_back();
+    auto& bounds = layout.guard_bounds.emplace_back();
     for (Index t = 0; t < type.transitions.size(); ++t) {
       (type.transitions[t].port == bipc::ir::kNone ? internal : labelled).push_back(t);
+      bounds.push_back(ClockBounds::of(type.transitions[t].guard));
     }
   }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/interpreter/clock_bounds.h"
 #include "engines/time_value.h"
 #include "engines/value.h"
 
@@ -42,6 +43,8 @@ struct Layout {
   std::vector<TimeValue> clock_units;  // per flattened clock
   // Per atom type, in declaration order: transitions labelled by a port, internal ones.
   std::vector<std::vector<Index>> labelled_transitions, internal_transitions;
+  // Per atom type, per transition: its guard as clock bounds, when it has that form.
+  std::vector<std::vector<std::optional<ClockBounds>>> guard_bounds;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   std::vector<PortSet> required_ports;   // per connector: the ports every defined one contains
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound

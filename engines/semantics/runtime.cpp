@@ -334,12 +334,14 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Frame f = atom_frame(s, atom);
-  for (Index t : layout_.labelled_transitions[system_.atoms[atom].type]) {
+  const Index type_index = system_.atoms[atom].type;
+  for (Index t : layout_.labelled_transitions[type_index]) {
     const bipc::ir::Transition& tr = type.transitions[t];
     bool marked = true;
     for (Index p : tr.from) marked = marked && state_.marking[base + p];
     if (!marked) continue;
-    const Interval when = s.eval.holds_when(tr.guard, f);
+    const std::optional<ClockBounds>& bounds = layout_.guard_bounds[type_index][t];
+    const Interval when = bounds ? bounds->holds_when(f) : s.eval.holds_when(tr.guard, f);
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
