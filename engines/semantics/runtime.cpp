@@ -40,10 +40,6 @@ Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
   }
 }
 
-Constraint intersect(const Constraint& a, const Constraint& b) {
-  return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
-}
-
 /// The urgent part of a constraint: lazy none, delayable its closed right end, eager all of it.
 Interval urgent_part(const Constraint& c) {
   switch (c.urgency) {
@@ -686,22 +682,23 @@ void Runtime::compute_interactions(Index k) {
     std::size_t& depth;
     ~DepthGuard() { --depth; }
   } depth_guard{++scratch_depth_};
-  gather_offers(k, scratch.offers);
+  gather_offers(k, scratch);
   const auto defined = static_cast<std::uint32_t>(layout_.defined[k].size());
   for (std::uint32_t d = 0; d < defined; ++d) add_interactions(k, d, scratch);
 }
 
-void Runtime::gather_offers(Index k, std::vector<std::vector<PortValue>>& offers) {
+void Runtime::gather_offers(Index k, ConnectorScratch& scratch) {
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
-  const std::size_t n = connector.bound.size();
-  if (offers.size() < n) offers.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    offers[i].clear();
+  std::vector<PortValue>& offers = scratch.offers;
+  offers.clear();
+  scratch.first_offer.clear();
+  for (std::size_t i = 0; i < connector.bound.size(); ++i) {
+    scratch.first_offer.push_back(static_cast<std::uint32_t>(offers.size()));
     for (const bipc::ir::PortRef& ref : connector.bound[i]) {
       if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
         if (state_.resume_pending[ref.instance]) continue;
         const auto& v = port_values_[port_offset_[ref.instance] + ref.port];
-        if (v) offers[i].push_back({true, ref.instance, ref.port, kNone, v->constraint});
+        if (v) offers.push_back({true, ref.instance, ref.port, kNone, v->constraint});
         continue;
       }
       compute_connector(ref.instance);
@@ -710,32 +707,33 @@ void Runtime::gather_offers(Index k, std::vector<std::vector<PortValue>>& offers
         const InteractionValue& sv = values_[sub];
         const Constraint& c = maximal_only ? sv.after : sv.raw;
         if (maximal_only && c.interval.empty()) continue;
-        offers[i].push_back({false, 0, 0, sub, c});
+        offers.push_back({false, 0, 0, sub, c});
       }
     }
   }
+  scratch.first_offer.push_back(static_cast<std::uint32_t>(offers.size()));
 }
 
 void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scratch) {
-  const PortSet ports = layout_.defined[k][d].ports;
-  const std::vector<std::vector<PortValue>>& offers = scratch.offers;
-  std::vector<std::size_t>& members = scratch.members;
+  const std::vector<std::uint32_t>& first = scratch.first_offer;
+  std::vector<std::uint32_t>& members = scratch.members;
+  std::vector<std::uint32_t>& pick = scratch.pick;
   members.clear();
-  for (PortSet left = ports; left != 0; left &= left - 1) {
+  pick.clear();
+  for (PortSet left = layout_.defined[k][d].ports; left != 0; left &= left - 1) {
     const auto i = static_cast<std::size_t>(std::countr_zero(left));
-    if (offers[i].empty()) return;
-    members.push_back(i);
+    if (first[i] == first[i + 1]) return;  // a port without offers
+    members.push_back(static_cast<std::uint32_t>(i));
+    pick.push_back(first[i]);
   }
-  std::vector<std::size_t>& pick = scratch.pick;
-  pick.assign(members.size(), 0);
   for (;;) {
     add_interaction(k, d, scratch);
     // Next combination: the last port varies fastest (first port outermost).
     std::size_t m = members.size();
     while (m > 0) {
       --m;
-      if (++pick[m] < offers[members[m]].size()) break;
-      pick[m] = 0;
+      if (++pick[m] < first[members[m] + 1]) break;
+      pick[m] = first[members[m]];
       if (m == 0) return;
     }
     if (members.empty()) return;
@@ -749,10 +747,11 @@ void Runtime::add_interaction(Index k, std::uint32_t d, const ConnectorScratch& 
   value.defined = d;
   value.ports = layout_.defined[k][d].ports;
   value.raw = Constraint{};
-  for (std::size_t m = 0; m < scratch.members.size(); ++m) {
-    const PortValue& pv = scratch.offers[scratch.members[m]][scratch.pick[m]];
+  for (std::uint32_t offer : scratch.pick) {
+    const PortValue& pv = scratch.offers[offer];
     value.choice.push_back(pv);
-    value.raw = intersect(value.raw, pv.constraint);
+    narrow(value.raw.interval, pv.constraint.interval);
+    value.raw.urgency = stronger(value.raw.urgency, pv.constraint.urgency);
   }
   if (!value.raw.interval.empty() && connector_code_allows(value)) {
     value.after = value.raw;

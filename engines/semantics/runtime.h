@@ -206,7 +206,7 @@ class Runtime {
   /// The connector's interaction values, from its ports' offers.
   void compute_interactions(Index connector);
   /// Per port parameter, the offers of the atom ports and sub-connectors it binds.
-  void gather_offers(Index connector, std::vector<std::vector<PortValue>>& offers);
+  void gather_offers(Index connector, ConnectorScratch& scratch);
   /// The values of defined interaction `d`: one per combination of its ports' offers.
   void add_interactions(Index connector, std::uint32_t d, ConnectorScratch& scratch);
   /// The value of the combination of offers `scratch.pick`, if its constraint and guard allow.
@@ -296,8 +296,10 @@ class Runtime {
   std::vector<Index> free_values_;
   // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
   struct ConnectorScratch {
-    std::vector<std::vector<PortValue>> offers;
-    std::vector<std::size_t> members, pick;
+    std::vector<PortValue> offers;           // the ports' offers, port after port
+    std::vector<std::uint32_t> first_offer;  // per port, its first offer; then offers.size()
+    std::vector<std::uint32_t> members;      // the ports of the defined interaction
+    std::vector<std::uint32_t> pick;         // per member, the offer of the combination
   };
   std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
   std::size_t scratch_depth_ = 0;
