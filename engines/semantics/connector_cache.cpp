@@ -43,6 +43,7 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       urgent_(system.connectors.size(), 0),
       stale_(system.connectors.size(), 0),
       computed_(system.connectors.size(), 0),
+      checked_(system.connectors.size(), 0),
       touched_(system.atoms.size(), 0) {
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];
@@ -75,23 +76,16 @@ void ConnectorCache::mark_stale_with_binders(Index k) {
   for (Index parent : parents_[k]) mark_stale(parent);
 }
 
-void ConnectorCache::begin(TimeValue now, bool full) {
+bool ConnectorCache::start(TimeValue now, bool full) {
   time_passed_ = full || now != last_now_;
   last_now_ = now;
-  if (full) {
-    // A failed computation may have left flags behind.
-    stale_.assign(stale_.size(), 1);
-    computed_.assign(computed_.size(), 0);
-    stale_list_.resize(stale_.size());
-    for (Index k = 0; k < stale_list_.size(); ++k) stale_list_[k] = k;
-  } else {
-    for (Index atom : touched_list_) {
-      for (Index k : atom_connectors_[atom]) mark_stale(k);
-    }
-    for (Index k : volatile_) mark_stale(k);
-  }
-  for (Index atom : touched_list_) touched_[atom] = 0;
-  touched_list_.clear();
+  if (!full) return false;
+  // A failed computation may have left flags behind.
+  stale_.assign(stale_.size(), 1);
+  computed_.assign(computed_.size(), 0);
+  stale_list_.resize(stale_.size());
+  for (Index k = 0; k < stale_list_.size(); ++k) stale_list_[k] = k;
+  return true;
 }
 
 void ConnectorCache::priorities_changed(Index k) {

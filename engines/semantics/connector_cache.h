@@ -29,8 +29,25 @@ class ConnectorCache {
   void touch_atom(bipc::ir::Index atom);
 
   /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
-  /// closed upwards over the connectors binding them.
-  void begin(TimeValue now, bool full);
+  /// closed upwards over the connectors binding them. A connector of a touched atom for which
+  /// `keeps_no_values(connector)` holds (it had no values and still can have none) stays as it
+  /// is: neither it nor its binders become stale on its account.
+  template <class KeepsNoValues>
+  void begin(TimeValue now, bool full, KeepsNoValues keeps_no_values) {
+    if (!start(now, full)) {
+      ++generation_;
+      for (bipc::ir::Index atom : touched_list_) {
+        for (bipc::ir::Index k : atom_connectors_[atom]) {
+          if (stale_[k] || checked_[k] == generation_) continue;
+          checked_[k] = generation_;
+          if (!keeps_no_values(k)) mark_stale_with_binders(k);
+        }
+      }
+      for (bipc::ir::Index k : volatile_) mark_stale(k);
+    }
+    for (bipc::ir::Index atom : touched_list_) touched_[atom] = 0;
+    touched_list_.clear();
+  }
   bool stale(bipc::ir::Index connector) const { return stale_[connector] != 0; }
   /// Whether the connector's values must be computed now: true once per computation for each
   /// stale connector.
@@ -60,6 +77,8 @@ class ConnectorCache {
   void end();
 
  private:
+  /// The first part of begin(): true when the computation is a full one (all stale).
+  bool start(TimeValue now, bool full);
   void mark_stale(bipc::ir::Index connector) {
     if (!stale_[connector]) mark_stale_with_binders(connector);
   }
@@ -73,6 +92,8 @@ class ConnectorCache {
   std::vector<std::uint8_t> time_dependent_, urgent_;
   std::vector<std::uint8_t> stale_, computed_;
   std::vector<bipc::ir::Index> stale_list_;
+  std::vector<std::uint32_t> checked_;  // per connector: the last begin() that looked at it
+  std::uint32_t generation_ = 0;
   std::vector<std::uint8_t> touched_;
   std::vector<bipc::ir::Index> touched_list_;
   bool all_stale_ = true;

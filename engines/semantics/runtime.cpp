@@ -822,7 +822,13 @@ void Runtime::begin_values(bool full) {
     connector_values_.resize(system_.connectors.size());
     for (IndexList& list : connector_values_) list.clear();
   }
-  cache_.begin(state_.now, full);
+  cache_.begin(state_.now, full, [this](Index k) { return keeps_no_values(k); });
+}
+
+bool Runtime::keeps_no_values(Index k) const {
+  // Connectors binding sub-connectors are always recomputed: that computes their
+  // sub-connectors in the usual order.
+  return connector_values_[k].empty() && !has_sub_connectors_[k] && misses_required_atom_port(k);
 }
 
 void Runtime::recompute_priorities(Index k) {

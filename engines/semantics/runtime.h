@@ -198,6 +198,9 @@ class Runtime {
   /// Whether a port every interaction of the connector contains binds only atom ports, none of
   /// which offers anything: then the connector has no interaction.
   bool misses_required_atom_port(Index connector) const;
+  /// Whether the connector had no values and, its atoms' offers being what they are, still
+  /// has none: the optimised scheduler then leaves it as it is.
+  bool keeps_no_values(Index connector) const;
   /// Computes the connectors bound to the connector's ports, in port order.
   void compute_sub_connectors(Index connector);
   /// Frees the connector's values of the last computation.
