@@ -64,12 +64,6 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
   }
 }
 
-void ConnectorCache::touch_atom(Index atom) {
-  if (touched_[atom]) return;
-  touched_[atom] = 1;
-  touched_list_.push_back(atom);
-}
-
 void ConnectorCache::mark_stale_with_binders(Index k) {
   stale_[k] = 1;
   stale_list_.push_back(k);

@@ -192,10 +192,12 @@ std::string build_layout(const System& system, Layout& layout) {
   for (const bipc::ir::AtomType& type : system.atom_types) {
     auto& labelled = layout.labelled_transitions.emplace_back();
     auto& internal = layout.internal_transitions.emplace_back();
-    auto& bounds = layout.guard_bounds.emplace_back();
     for (Index t = 0; t < type.transitions.size(); ++t) {
-      (type.transitions[t].port == bipc::ir::kNone ? internal : labelled).push_back(t);
-      bounds.push_back(ClockBounds::of(type.transitions[t].guard));
+      const bipc::ir::Transition& transition = type.transitions[t];
+      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1,
+                            ClockBounds::of(transition.guard)};
+      if (!transition.from.empty()) entry.first_place = transition.from.front();
+      (transition.port == bipc::ir::kNone ? internal : labelled).push_back(std::move(entry));
     }
   }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {

@@ -35,6 +35,14 @@ struct PriorityRule {
   PortSet high = 0;                        // 0 with a connector: `D:*` (every interaction of D)
 };
 
+/// A transition of an atom type as its atoms look for enabled ones.
+struct TransitionEntry {
+  Index transition = 0;
+  Index first_place = bipc::ir::kNone;      // its first `from` place (kNone: it has none)
+  bool more_places = false;                 // whether it has other `from` places
+  std::optional<ClockBounds> guard_bounds;  // its guard as clock bounds, when it has that form
+};
+
 struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets
   std::vector<std::size_t> connector_data;                                    // offsets
@@ -42,9 +50,7 @@ struct Layout {
   std::vector<Val> params;             // atom parameters, flattened
   std::vector<TimeValue> clock_units;  // per flattened clock
   // Per atom type, in declaration order: transitions labelled by a port, internal ones.
-  std::vector<std::vector<Index>> labelled_transitions, internal_transitions;
-  // Per atom type, per transition: its guard as clock bounds, when it has that form.
-  std::vector<std::vector<std::optional<ClockBounds>>> guard_bounds;
+  std::vector<std::vector<TransitionEntry>> labelled_transitions, internal_transitions;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   std::vector<PortSet> required_ports;   // per connector: the ports every defined one contains
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound

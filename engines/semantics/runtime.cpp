@@ -237,8 +237,6 @@ bool Runtime::initialize() {
 
 bool Runtime::check_invariants(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
-  // Such an atom's invariant stays `all` (its time bound is noted where its resume changes).
-  if (type.invariants.empty()) return true;
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
   if (!s.on_worker) note_time_bound(atom);
@@ -297,21 +295,33 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
     state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
     if (!s.on_worker) note_time_bound(atom);
   }
-  return check_invariants(s, atom);
+  // An atom without invariants keeps `all` (its time bound is noted where its resume changes).
+  return type.invariants.empty() || check_invariants(s, atom);
+}
+
+bool Runtime::from_marked(const TransitionEntry& entry, const bipc::ir::Transition& transition,
+                          std::size_t base) const {
+  if (entry.first_place == kNone) return true;
+  if (!state_.marking[base + entry.first_place]) return false;
+  if (!entry.more_places) return true;
+  for (Index p : transition.from) {
+    if (!state_.marking[base + p]) return false;
+  }
+  return true;
 }
 
 bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
-  const std::vector<Index>& internal = layout_.internal_transitions[system_.atoms[atom].type];
+  const std::vector<TransitionEntry>& internal =
+      layout_.internal_transitions[system_.atoms[atom].type];
   if (internal.empty()) return true;
   for (;;) {
     Index enabled = kNone;
-    for (Index t : internal) {
+    for (const TransitionEntry& entry : internal) {
+      const Index t = entry.transition;
       const bipc::ir::Transition& tr = type.transitions[t];
-      bool marked = true;
-      for (Index p : tr.from) marked = marked && state_.marking[base + p];
-      if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
+      if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
       if (enabled != kNone) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
                              layout_.atom_names[atom] + "!");
@@ -331,13 +341,12 @@ bool Runtime::update_atom(AtomScratch s, Index atom) {
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Frame f = atom_frame(s, atom);
   const Index type_index = system_.atoms[atom].type;
-  for (Index t : layout_.labelled_transitions[type_index]) {
+  for (const TransitionEntry& entry : layout_.labelled_transitions[type_index]) {
+    const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
-    bool marked = true;
-    for (Index p : tr.from) marked = marked && state_.marking[base + p];
-    if (!marked) continue;
-    const std::optional<ClockBounds>& bounds = layout_.guard_bounds[type_index][t];
-    const Interval when = bounds ? bounds->holds_when(f) : s.eval.holds_when(tr.guard, f);
+    if (!from_marked(entry, tr, base)) continue;
+    const Interval when =
+        entry.guard_bounds ? entry.guard_bounds->holds_when(f) : s.eval.holds_when(tr.guard, f);
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
