@@ -82,8 +82,8 @@ struct RuntimeDetail {
     const PortValue& pv = v.choice[static_cast<std::size_t>(std::popcount(below))];
     Runtime& r = *c.runtime;
     if (pv.from_atom) {
-      const AtomType& type = r.system_.atom_types[r.system_.atoms[pv.atom].type];
-      return &r.state_.data[r.layout_.atom_data[pv.atom] + type.ports[pv.port].data[arg]];
+      const std::size_t first = r.port_data_begin_[r.port_offset_[pv.atom] + pv.port];
+      return &r.state_.data[r.port_data_slots_[first + arg]];
     }
     InteractionValue& sub = r.values_[pv.sub];
     const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
@@ -123,9 +123,18 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
       cache_(system, layout) {
   for (Index a = 0; a < system.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
-    port_values_.resize(port_values_.size() + system.atom_types[system.atoms[a].type].ports.size());
+    for (const bipc::ir::Port& port : system.atom_types[system.atoms[a].type].ports) {
+      port_values_.emplace_back();
+      port_data_begin_.push_back(port_data_slots_.size());
+      for (Index slot : port.data) port_data_slots_.push_back(layout.atom_data[a] + slot);
+    }
   }
   index_required_offers();
+  listing_position_.assign(system.connectors.size(), kNone);
+  for (Index i = 0; i < layout.listed_connectors.size(); ++i) {
+    listing_position_[layout.listed_connectors[i]] = i;
+  }
+  listed_with_values_.resize(layout.listed_connectors.size());
   for (Index a = 0; a < system.atoms.size(); ++a) {
     const bool has_clocks = !system.atom_types[system.atoms[a].type].clocks.empty();
     atom_slots_.push_back({layout.atom_data[a], layout.params.data() + layout.atom_params[a],
@@ -679,8 +688,10 @@ void Runtime::compute_connector(Index k) {
 
 void Runtime::release_values(Index k) {
   // Connectors binding this one are stale too, so nothing refers to its old values any more.
+  if (connector_values_[k].empty()) return;
   for (Index v : connector_values_[k]) free_values_.push_back(v);
   connector_values_[k].clear();
+  if (listing_position_[k] != kNone) listed_with_values_.erase(listing_position_[k]);
 }
 
 void Runtime::compute_interactions(Index k) {
@@ -765,6 +776,7 @@ void Runtime::add_interaction(Index k, std::uint32_t d, const ConnectorScratch& 
   if (!value.raw.interval.empty() && connector_code_allows(value)) {
     value.after = value.raw;
     connector_values_[k].push_back(slot);
+    if (listing_position_[k] != kNone) listed_with_values_.insert(listing_position_[k]);
   } else {
     free_values_.push_back(slot);
   }
@@ -830,6 +842,7 @@ void Runtime::begin_values(bool full) {
     for (Index v = static_cast<Index>(values_.size()); v-- > 0;) free_values_.push_back(v);
     connector_values_.resize(system_.connectors.size());
     for (IndexList& list : connector_values_) list.clear();
+    listed_with_values_.clear();
   }
   cache_.begin(state_.now, full, [this](Index k) { return keeps_no_values(k); });
 }
@@ -901,13 +914,13 @@ bool Runtime::compute_items() {
     item.offered = c;
     return &item;
   };
-  for (Index k : layout_.listed_connectors) {
-    for (Index v : connector_values_[k]) {
+  listed_with_values_.for_each([&](std::size_t position) {
+    for (Index v : connector_values_[layout_.listed_connectors[position]]) {
       const Constraint& after = values_[v].after;
       if (after.interval.empty()) continue;
       if (Item* item = add(after)) item->value = v;
     }
-  }
+  });
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
@@ -932,14 +945,15 @@ bool Runtime::compute_items() {
 Interval Runtime::wait_interval() const {
   // A lazy constraint lets time pass (its wait is `from now`, which leaves w as it is): skipped.
   Interval w = Interval::from(state_.now);
-  for (Index k : layout_.listed_connectors) {
-    if (!cache_.urgent(k)) continue;
+  listed_with_values_.for_each([&](std::size_t position) {
+    const Index k = layout_.listed_connectors[position];
+    if (!cache_.urgent(k)) return;
     for (Index v : connector_values_[k]) {
       const InteractionValue& value = values_[v];
       if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
       narrow(w, wait(value.raw, state_.now));
     }
-  }
+  });
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];

@@ -19,6 +19,7 @@
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
+#include "engines/semantics/position_set.h"
 #include "engines/stochastic/random_stream.h"
 
 namespace smcbip::engines {
@@ -278,6 +279,10 @@ class Runtime {
   // Per atom port (flattened by atom, port): its offer, if any.
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
+  // Per atom port (flattened likewise): its first entry in port_data_slots_, which lists the
+  // state slots of the ports' parameters (connector code reads and writes them).
+  std::vector<std::size_t> port_data_begin_;
+  std::vector<std::size_t> port_data_slots_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
   // Per atom: whether a pending resume or an invariant bounds the time that may pass; atoms
@@ -288,6 +293,10 @@ class Runtime {
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
   std::vector<IndexList> connector_values_;
+  // Per connector, its position in layout_.listed_connectors (kNone if not listed); the listed
+  // connectors that have values, by position.
+  std::vector<Index> listing_position_;
+  PositionSet listed_with_values_;
   // Per connector: the atom ports bound to its port parameters that every defined interaction
   // contains (parameters binding atom ports only), parameter by parameter; and whether a
   // parameter binds a sub-connector.
