@@ -75,30 +75,44 @@ std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, In
 }
 
 void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
+  const InteractionValue& value = runtime.values()[item.value];
   key_.clear();
-  if (item.kind == Item::Kind::Interaction) {
-    const InteractionValue& value = runtime.values()[item.value];
-    key_.emplace_back(static_cast<Index>(item.kind), value.connector);
-    key_.emplace_back(value.defined, 0);
-  } else {
-    key_.emplace_back(static_cast<Index>(item.kind), 0);
-  }
-  ports_begin_ = key_.size();
+  key_.emplace_back(value.connector, value.defined);
   runtime.append_atom_ports(item, key_);
 }
 
-DatePlanner::Planned& DatePlanner::plan_of() {
+void DatePlanner::index_connectors(const Runtime& runtime) {
+  port_plans_.resize(stochastic_ports_.size());
+  connector_plans_.resize(system_.connectors.size());
+  for (Index k = 0; k < system_.connectors.size(); ++k) {
+    // Each port binding exactly one atom port: the interaction decides the atom ports.
+    bool atom_per_port = true;
+    for (const auto& refs : system_.connectors[k].bound) {
+      atom_per_port =
+          atom_per_port && refs.size() == 1 && refs.front().kind == bipc::ir::PortRef::Kind::Atom;
+    }
+    const std::size_t defined = runtime.layout().defined[k].size();
+    if (atom_per_port && defined <= kDirectPlans) connector_plans_[k].resize(defined);
+  }
+}
+
+DatePlanner::Planned& DatePlanner::plan_of(const Runtime& runtime, const Item& item) {
+  if (item.kind != Item::Kind::Interaction) return port_plans_[first_port_[item.atom] + item.port];
+  const InteractionValue& value = runtime.values()[item.value];
+  std::vector<Planned>& direct = connector_plans_[value.connector];
+  if (!direct.empty()) return direct[value.defined];
+  key_of(runtime, item);
   auto found = plans_.find(std::span<const std::pair<Index, Index>>(key_));
   if (found == plans_.end()) found = plans_.emplace(key_, Planned{}).first;
   return found->second;
 }
 
 bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::string& error) {
+  if (connector_plans_.empty()) index_connectors(runtime);
   dates.clear();
   ++generation_;
   for (const Item& item : runtime.items()) {
-    key_of(runtime, item);
-    Planned& planned = plan_of();
+    Planned& planned = plan_of(runtime, item);
     const bool kept = planned.seen + 1 == generation_ && same(planned.offered, item.offered);
     if (!kept) {
       if (!draw(runtime, item, planned.date, error)) return false;
@@ -118,17 +132,24 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
   // The item's own window from now: the dates other items' deadlines cut off stay possible, as
   // the race decides whether the item gets there.
   const Interval window = item.offered.interval.intersect(Interval::from(runtime.state().now));
-  if (const auto stochastic = stochastic_port()) {
+  if (const auto stochastic = stochastic_port(runtime, item)) {
     return draw_stochastic(runtime, stochastic->first, stochastic->second, window, date, error);
   }
   date = draw_timed(item.offered.urgency, window);
   return true;
 }
 
-std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
-  for (std::size_t i = ports_begin_; i < key_.size(); ++i) {
-    const auto& [atom, port] = key_[i];
-    if (stochastic_ports_[first_port_[atom] + port]) return key_[i];
+std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port(const Runtime& runtime,
+                                                                    const Item& item) {
+  if (item.kind != Item::Kind::Interaction) {
+    if (stochastic_ports_[first_port_[item.atom] + item.port])
+      return std::pair{item.atom, item.port};
+    return std::nullopt;
+  }
+  ports_.clear();
+  runtime.append_atom_ports(item, ports_);
+  for (const auto& [atom, port] : ports_) {
+    if (stochastic_ports_[first_port_[atom] + port]) return std::pair{atom, port};
   }
   return std::nullopt;
 }
@@ -136,10 +157,9 @@ std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
 void DatePlanner::replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates) {
   const std::vector<Item>& items = runtime.items();
   for (std::size_t i = 0; i < items.size(); ++i) {
-    key_of(runtime, items[i]);
-    if (stochastic_port()) continue;
+    if (stochastic_port(runtime, items[i])) continue;
     dates[i] = draw_timed(items[i].constraint.urgency, items[i].constraint.interval);
-    plan_of().date = dates[i];
+    plan_of(runtime, items[i]).date = dates[i];
   }
 }
 
