@@ -84,6 +84,7 @@ void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
 void DatePlanner::index_connectors(const Runtime& runtime) {
   port_plans_.resize(stochastic_ports_.size());
   connector_plans_.resize(system_.connectors.size());
+  connector_stochastic_.resize(system_.connectors.size());
   for (Index k = 0; k < system_.connectors.size(); ++k) {
     // Each port binding exactly one atom port: the interaction decides the atom ports.
     bool atom_per_port = true;
@@ -91,9 +92,25 @@ void DatePlanner::index_connectors(const Runtime& runtime) {
       atom_per_port =
           atom_per_port && refs.size() == 1 && refs.front().kind == bipc::ir::PortRef::Kind::Atom;
     }
-    const std::size_t defined = runtime.layout().defined[k].size();
-    if (atom_per_port && defined <= kDirectPlans) connector_plans_[k].resize(defined);
+    const std::vector<DefinedInteraction>& defined = runtime.layout().defined[k];
+    if (!atom_per_port || defined.size() > kDirectPlans) continue;
+    for (const DefinedInteraction& interaction : defined) {
+      connector_plans_[k].push_back({});
+      connector_stochastic_[k].push_back(stochastic_port_of(k, interaction.ports));
+    }
   }
+}
+
+std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port_of(Index k,
+                                                                       PortSet ports) const {
+  const auto& bound = system_.connectors[k].bound;
+  for (std::size_t i = 0; i < bound.size(); ++i) {
+    const bipc::ir::PortRef& ref = bound[i].front();
+    if ((ports & (PortSet{1} << i)) && stochastic_ports_[first_port_[ref.instance] + ref.port]) {
+      return std::pair{ref.instance, ref.port};
+    }
+  }
+  return std::nullopt;
 }
 
 DatePlanner::Planned& DatePlanner::plan_of(const Runtime& runtime, const Item& item) {
@@ -145,6 +162,10 @@ std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port(const Runtim
     if (stochastic_ports_[first_port_[item.atom] + item.port])
       return std::pair{item.atom, item.port};
     return std::nullopt;
+  }
+  const InteractionValue& value = runtime.values()[item.value];
+  if (!connector_plans_[value.connector].empty()) {
+    return connector_stochastic_[value.connector][value.defined];
   }
   ports_.clear();
   runtime.append_atom_ports(item, ports_);

@@ -84,6 +84,9 @@ class DatePlanner {
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
+  /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
+  /// bind one atom port), if any.
+  std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;
   /// The @stochastic port among the atom ports the item fires (at most one), if any.
   std::optional<std::pair<Index, Index>> stochastic_port(const Runtime& runtime, const Item& item);
 
@@ -97,6 +100,8 @@ class DatePlanner {
   static constexpr std::size_t kDirectPlans = 64;
   std::vector<Planned> port_plans_;                    // per flattened atom port
   std::vector<std::vector<Planned>> connector_plans_;  // per connector, per defined interaction
+  // Likewise, the @stochastic atom port of each such interaction.
+  std::vector<std::vector<std::optional<std::pair<Index, Index>>>> connector_stochastic_;
   Plans plans_;
   std::uint64_t generation_ =
       1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
