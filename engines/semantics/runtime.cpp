@@ -308,8 +308,8 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
   return type.invariants.empty() || check_invariants(s, atom);
 }
 
-bool Runtime::from_marked(const TransitionEntry& entry, const bipc::ir::Transition& transition,
-                          std::size_t base) const {
+inline bool Runtime::from_marked(const TransitionEntry& entry,
+                                 const bipc::ir::Transition& transition, std::size_t base) const {
   if (entry.first_place == kNone) return true;
   if (!state_.marking[base + entry.first_place]) return false;
   if (!entry.more_places) return true;
@@ -790,6 +790,7 @@ bool Runtime::connector_code_allows(InteractionValue& value) {
   const int code = layout_.defined[k][value.defined].code;
   if (code < 0) return true;
   const bipc::ir::InteractionCode& interaction = type.interactions[static_cast<std::size_t>(code)];
+  if (interaction.guard.empty() && interaction.up.empty()) return true;  // e.g. only a `down`
   const PortContext context{this, &value};
   const Frame f = connector_frame(value, context, state_.now);
   if (!eval_.holds(interaction.guard, f)) return false;

@@ -190,8 +190,9 @@ class Runtime {
   bool run_internal_transitions(AtomScratch s, Index atom);
   bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label);
   /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
-  bool from_marked(const TransitionEntry& entry, const bipc::ir::Transition& transition,
-                   std::size_t base) const;
+  [[gnu::always_inline]] inline bool from_marked(const TransitionEntry& entry,
+                                                 const bipc::ir::Transition& transition,
+                                                 std::size_t base) const;
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
   bool check_invariants(AtomScratch s, Index atom);
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
