@@ -129,6 +129,7 @@ Runtime::Runtime(const bipc::ir::System& system, const Layout& layout,
       for (Index slot : port.data) port_data_slots_.push_back(layout.atom_data[a] + slot);
     }
   }
+  index_single_atom_ports();
   index_required_offers();
   listing_position_.assign(system.connectors.size(), kNone);
   for (Index i = 0; i < layout.listed_connectors.size(); ++i) {
@@ -281,7 +282,8 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
   return true;
 }
 
-bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label) {
+bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label,
+                              const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
@@ -298,10 +300,10 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
     }
     state_.marking[base + p] = 1;
   }
-  s.eval.execute(t.action, atom_frame(s, atom));
+  s.eval.execute(t.action, f);
   if (t.resume) {
     state_.resume_pending[atom] = 1;
-    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
+    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, f);
     if (!s.on_worker) note_time_bound(atom);
   }
   // An atom without invariants keeps `all` (its time bound is noted where its resume changes).
@@ -325,12 +327,13 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   const std::vector<TransitionEntry>& internal =
       layout_.internal_transitions[system_.atoms[atom].type];
   if (internal.empty()) return true;
+  const Frame f = atom_frame(s, atom);
   for (;;) {
     Index enabled = kNone;
     for (const TransitionEntry& entry : internal) {
       const Index t = entry.transition;
       const bipc::ir::Transition& tr = type.transitions[t];
-      if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
+      if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, f)) continue;
       if (enabled != kNone) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
                              layout_.atom_names[atom] + "!");
@@ -338,17 +341,16 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
       enabled = t;
     }
     if (enabled == kNone) return true;
-    if (!fire_transition(s, atom, enabled, kNone)) return false;
+    if (!fire_transition(s, atom, enabled, kNone, f)) return false;
   }
 }
 
-bool Runtime::update_atom(AtomScratch s, Index atom) {
+bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
-  const Frame f = atom_frame(s, atom);
   const Index type_index = system_.atoms[atom].type;
   for (const TransitionEntry& entry : layout_.labelled_transitions[type_index]) {
     const Index t = entry.transition;
@@ -664,6 +666,23 @@ bool Runtime::misses_required_atom_port(Index k) const {
   return false;
 }
 
+void Runtime::index_single_atom_ports() {
+  single_atom_ports_.resize(system_.connectors.size());
+  for (Index k = 0; k < system_.connectors.size(); ++k) {
+    const auto& bound = system_.connectors[k].bound;
+    bool single = !bound.empty();
+    for (const auto& refs : bound) {
+      single = single && refs.size() == 1 && refs.front().kind == bipc::ir::PortRef::Kind::Atom;
+    }
+    if (!single) continue;
+    for (const auto& refs : bound) {
+      const bipc::ir::PortRef& ref = refs.front();
+      single_atom_ports_[k].push_back(
+          {ref.instance, ref.port, port_offset_[ref.instance] + ref.port});
+    }
+  }
+}
+
 void Runtime::compute_sub_connectors(Index k) {
   if (!has_sub_connectors_[k]) return;
   for (const auto& refs : system_.connectors[k].bound) {
@@ -695,6 +714,10 @@ void Runtime::release_values(Index k) {
 }
 
 void Runtime::compute_interactions(Index k) {
+  if (!single_atom_ports_[k].empty()) {
+    compute_single_offer_interactions(k);
+    return;
+  }
   // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
   if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
   ConnectorScratch& scratch = scratch_[scratch_depth_];
@@ -760,19 +783,53 @@ void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scrat
   }
 }
 
+void Runtime::compute_single_offer_interactions(Index k) {
+  // Each port offers at most once: one combination per defined interaction whose ports all do.
+  const std::vector<SingleAtomPort>& ports = single_atom_ports_[k];
+  PortSet offering = 0;
+  for (std::size_t i = 0; i < ports.size(); ++i) {
+    if (!state_.resume_pending[ports[i].atom] && port_values_[ports[i].offer]) {
+      offering |= PortSet{1} << i;
+    }
+  }
+  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
+  for (std::uint32_t d = 0; d < defined.size(); ++d) {
+    if ((defined[d].ports & ~offering) != 0) continue;
+    const Index slot = start_value(k, d);
+    InteractionValue& value = values_[slot];
+    for (PortSet left = value.ports; left != 0; left &= left - 1) {
+      const SingleAtomPort& port = ports[static_cast<std::size_t>(std::countr_zero(left))];
+      add_choice(value, {true, port.atom, port.port, kNone, port_values_[port.offer]->constraint});
+    }
+    keep_value_if_allowed(k, slot);
+  }
+}
+
 void Runtime::add_interaction(Index k, std::uint32_t d, const ConnectorScratch& scratch) {
+  const Index slot = start_value(k, d);
+  InteractionValue& value = values_[slot];
+  for (std::uint32_t offer : scratch.pick) add_choice(value, scratch.offers[offer]);
+  keep_value_if_allowed(k, slot);
+}
+
+Index Runtime::start_value(Index k, std::uint32_t d) {
   const Index slot = acquire_value();
   InteractionValue& value = values_[slot];
   value.connector = k;
   value.defined = d;
   value.ports = layout_.defined[k][d].ports;
   value.raw = Constraint{};
-  for (std::uint32_t offer : scratch.pick) {
-    const PortValue& pv = scratch.offers[offer];
-    value.choice.push_back(pv);
-    narrow(value.raw.interval, pv.constraint.interval);
-    value.raw.urgency = stronger(value.raw.urgency, pv.constraint.urgency);
-  }
+  return slot;
+}
+
+void Runtime::add_choice(InteractionValue& value, const PortValue& offer) {
+  value.choice.push_back(offer);
+  narrow(value.raw.interval, offer.constraint.interval);
+  value.raw.urgency = stronger(value.raw.urgency, offer.constraint.urgency);
+}
+
+void Runtime::keep_value_if_allowed(Index k, Index slot) {
+  InteractionValue& value = values_[slot];
   if (!value.raw.interval.empty() && connector_code_allows(value)) {
     value.after = value.raw;
     connector_values_[k].push_back(slot);
@@ -1005,10 +1062,12 @@ bool Runtime::execute_value(Index index) {
 bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
   const auto& v = port_values_[port_offset_[atom] + port];
   if (!v) return true;
-  if (!fire_transition(s, atom, v->transition, port) || !run_internal_transitions(s, atom)) {
+  // One frame serves the whole firing: the date and the state's buffers stay put.
+  const Frame f = atom_frame(s, atom);
+  if (!fire_transition(s, atom, v->transition, port, f) || !run_internal_transitions(s, atom)) {
     return false;
   }
-  return state_.resume_pending[atom] || update_atom(s, atom);
+  return state_.resume_pending[atom] || update_atom(s, atom, f);
 }
 
 void Runtime::append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const {

@@ -182,13 +182,15 @@ class Runtime {
   AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
   Frame atom_frame(Index atom);
   Frame atom_frame(AtomScratch s, Index atom);
-  bool update_atom(Index atom) { return update_atom(main_scratch(), atom); }
-  bool update_atom(AtomScratch s, Index atom);
+  bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
+  /// `f`: the atom's frame (atom_frame).
+  bool update_atom(AtomScratch s, Index atom, const Frame& f);
   bool run_internal_transitions(Index atom) {
     return run_internal_transitions(main_scratch(), atom);
   }
   bool run_internal_transitions(AtomScratch s, Index atom);
-  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label);
+  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label,
+                       const Frame& f);
   /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
   [[gnu::always_inline]] inline bool from_marked(const TransitionEntry& entry,
                                                  const bipc::ir::Transition& transition,
@@ -219,6 +221,16 @@ class Runtime {
   void add_interactions(Index connector, std::uint32_t d, ConnectorScratch& scratch);
   /// The value of the combination of offers `scratch.pick`, if its constraint and guard allow.
   void add_interaction(Index connector, std::uint32_t d, const ConnectorScratch& scratch);
+  /// compute_interactions for a connector whose ports each bind one atom port.
+  void compute_single_offer_interactions(Index connector);
+  /// Fills single_atom_ports_.
+  void index_single_atom_ports();
+  /// A new value of defined interaction `d` of the connector, with no port chosen yet.
+  Index start_value(Index connector, std::uint32_t d);
+  /// Chooses the offer for the value's next port.
+  static void add_choice(InteractionValue& value, const PortValue& offer);
+  /// Keeps the value among the connector's if its constraint and guard allow, else frees it.
+  void keep_value_if_allowed(Index connector, Index slot);
   /// Copies the connector's data into the value and runs the guard, then `up` if it holds.
   bool connector_code_allows(InteractionValue& value);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
@@ -294,6 +306,13 @@ class Runtime {
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
   std::vector<IndexList> connector_values_;
+  // Per connector whose port parameters each bind exactly one atom port: those atom ports, in
+  // parameter order (empty for other connectors).
+  struct SingleAtomPort {
+    Index atom = 0, port = 0;
+    std::size_t offer = 0;  // index into port_values_
+  };
+  std::vector<std::vector<SingleAtomPort>> single_atom_ports_;
   // Per connector, its position in layout_.listed_connectors (kNone if not listed); the listed
   // connectors that have values, by position.
   std::vector<Index> listing_position_;
