@@ -356,8 +356,9 @@ bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
     const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
     if (!from_marked(entry, tr, base)) continue;
-    const Interval when =
-        entry.guard_bounds ? entry.guard_bounds->holds_when(f) : s.eval.holds_when(tr.guard, f);
+    const Interval when = tr.guard.empty()     ? Interval::all()
+                          : entry.guard_bounds ? entry.guard_bounds->holds_when(f)
+                                               : s.eval.holds_when(tr.guard, f);
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
@@ -695,6 +696,10 @@ void Runtime::compute_sub_connectors(Index k) {
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   release_values(k);
+  if (!single_atom_ports_[k].empty()) {
+    compute_single_offer_interactions(k);
+    return;
+  }
   // Most connectors of a state lack an offer that all their interactions need: they have no
   // interactions, found without gathering offers. Sub-connectors are computed all the same, in
   // the usual order, as their code may have effects (extern calls) or fail.
@@ -714,10 +719,6 @@ void Runtime::release_values(Index k) {
 }
 
 void Runtime::compute_interactions(Index k) {
-  if (!single_atom_ports_[k].empty()) {
-    compute_single_offer_interactions(k);
-    return;
-  }
   // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
   if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
   ConnectorScratch& scratch = scratch_[scratch_depth_];
