@@ -67,6 +67,8 @@ class ConnectorCache {
   bool needs_priorities(bipc::ir::Index connector) const {
     return stale_[connector] || ruled_[connector] || (time_passed_ && time_dependent_[connector]);
   }
+  /// Whether the connector's compound has priority rules.
+  bool ruled(bipc::ir::Index connector) const { return ruled_[connector] != 0; }
   /// Maximal progress restricted a value of the connector: its priorities depend on the date.
   void note_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 1; }
   void clear_time_dependent(bipc::ir::Index connector) { time_dependent_[connector] = 0; }

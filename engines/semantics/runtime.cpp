@@ -920,9 +920,11 @@ void Runtime::recompute_priorities(Index k) {
     return;
   }
   for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
+  // A lone value without priority rules has nothing above it: it stays as it is.
+  const bool alone = connector_values_[k].size() == 1 && !cache_.ruled(k);
   bool urgent = false;
   for (Index v : connector_values_[k]) {
-    apply_priorities(values_[v], k);
+    if (!alone) apply_priorities(values_[v], k);
     urgent =
         urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
   }
