@@ -624,18 +624,6 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
   return true;
 }
 
-Index Runtime::acquire_value() {
-  // Slots are reused with their vectors' capacity: no allocation once the pool has grown.
-  if (free_values_.empty()) {
-    values_.emplace_back();
-    return static_cast<Index>(values_.size() - 1);
-  }
-  const Index slot = free_values_.back();
-  free_values_.pop_back();
-  values_[slot].choice.clear();
-  return slot;
-}
-
 void Runtime::index_required_offers() {
   required_offers_.resize(system_.connectors.size());
   has_sub_connectors_.assign(system_.connectors.size(), 0);
@@ -784,6 +772,34 @@ void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scrat
   }
 }
 
+inline Index Runtime::acquire_value() {
+  // Slots are reused with their vectors' capacity: no allocation once the pool has grown.
+  if (free_values_.empty()) {
+    values_.emplace_back();
+    return static_cast<Index>(values_.size() - 1);
+  }
+  const Index slot = free_values_.back();
+  free_values_.pop_back();
+  values_[slot].choice.clear();
+  return slot;
+}
+
+inline Index Runtime::start_value(Index k, std::uint32_t d) {
+  const Index slot = acquire_value();
+  InteractionValue& value = values_[slot];
+  value.connector = k;
+  value.defined = d;
+  value.ports = layout_.defined[k][d].ports;
+  value.raw = Constraint{};
+  return slot;
+}
+
+inline void Runtime::add_choice(InteractionValue& value, const PortValue& offer) {
+  value.choice.push_back(offer);
+  narrow(value.raw.interval, offer.constraint.interval);
+  value.raw.urgency = stronger(value.raw.urgency, offer.constraint.urgency);
+}
+
 void Runtime::compute_single_offer_interactions(Index k) {
   // Each port offers at most once: one combination per defined interaction whose ports all do.
   const std::vector<SingleAtomPort>& ports = single_atom_ports_[k];
@@ -811,22 +827,6 @@ void Runtime::add_interaction(Index k, std::uint32_t d, const ConnectorScratch& 
   InteractionValue& value = values_[slot];
   for (std::uint32_t offer : scratch.pick) add_choice(value, scratch.offers[offer]);
   keep_value_if_allowed(k, slot);
-}
-
-Index Runtime::start_value(Index k, std::uint32_t d) {
-  const Index slot = acquire_value();
-  InteractionValue& value = values_[slot];
-  value.connector = k;
-  value.defined = d;
-  value.ports = layout_.defined[k][d].ports;
-  value.raw = Constraint{};
-  return slot;
-}
-
-void Runtime::add_choice(InteractionValue& value, const PortValue& offer) {
-  value.choice.push_back(offer);
-  narrow(value.raw.interval, offer.constraint.interval);
-  value.raw.urgency = stronger(value.raw.urgency, offer.constraint.urgency);
 }
 
 void Runtime::keep_value_if_allowed(Index k, Index slot) {
@@ -946,7 +946,7 @@ void Runtime::compute_compound(Index c) {
 bool Runtime::compute_items() {
   items_.clear();
   time_bound_ = time_bound();
-  if (!check_compound_priority_cycles()) return false;
+  if (has_priority_rules_ && !check_compound_priority_cycles()) return false;
   begin_values(!options_.incremental || cache_.all_stale());
   try {
     // Compounds bottom-up: a compound export of a sub-connector needs its values after

@@ -226,15 +226,16 @@ class Runtime {
   /// Fills single_atom_ports_.
   void index_single_atom_ports();
   /// A new value of defined interaction `d` of the connector, with no port chosen yet.
-  Index start_value(Index connector, std::uint32_t d);
+  [[gnu::always_inline]] inline Index start_value(Index connector, std::uint32_t d);
   /// Chooses the offer for the value's next port.
-  static void add_choice(InteractionValue& value, const PortValue& offer);
+  [[gnu::always_inline]] static inline void add_choice(InteractionValue& value,
+                                                       const PortValue& offer);
   /// Keeps the value among the connector's if its constraint and guard allow, else frees it.
   void keep_value_if_allowed(Index connector, Index slot);
   /// Copies the connector's data into the value and runs the guard, then `up` if it holds.
   bool connector_code_allows(InteractionValue& value);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
-  Index acquire_value();
+  [[gnu::always_inline]] inline Index acquire_value();
   void begin_values(bool full);
   void compute_compound(Index compound);
   void recompute_priorities(Index connector);
