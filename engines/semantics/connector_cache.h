@@ -26,7 +26,7 @@ class ConnectorCache {
   /// Whether the next computation must be a full one.
   bool all_stale() const { return all_stale_; }
   /// The atom's marking, data, resume state or offers may have changed.
-  void touch_atom(bipc::ir::Index atom) {
+  [[gnu::always_inline]] void touch_atom(bipc::ir::Index atom) {
     if (touched_[atom]) return;
     touched_[atom] = 1;
     touched_list_.push_back(atom);
