@@ -15,6 +15,7 @@ namespace smcbip::engines {
 
 struct Frame;
 struct BoundFunctions;
+class GuardBounds;
 
 /// Runs a model's code over one frame (an atom's or a connector's slots, and the date). One per
 /// thread: an implementation may keep a stack. Faults (division by zero, a missing extern) are
@@ -50,13 +51,15 @@ class Model {
 /// The model interpreted from its IR: expressions run on a stack machine over Code::instrs.
 class InterpretedModel final : public Model {
  public:
-  explicit InterpretedModel(const bipc::ir::System& system) : system_(system) {}
+  explicit InterpretedModel(const bipc::ir::System& system);
+  ~InterpretedModel() override;
   const bipc::ir::System& system() const override { return system_; }
   std::unique_ptr<ModelCode> make_code(const BoundFunctions& functions,
                                        CallContext& call) const override;
 
  private:
   const bipc::ir::System& system_;
+  std::unique_ptr<const GuardBounds> guard_bounds_;  // shared by the threads' evaluators
 };
 
 }  // namespace smcbip::engines

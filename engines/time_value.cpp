@@ -51,20 +51,6 @@ std::string format_time(TimeValue t) {
   return text;
 }
 
-bool Interval::contains(TimeValue t) const {
-  if (left_open ? t <= left : t < left) return false;
-  if (right_open ? t >= right : t > right) return false;
-  return true;
-}
-
-TimeValue Interval::first() const {
-  return left_open && left != kMinusInfinity && left != kPlusInfinity ? left + 1 : left;
-}
-
-TimeValue Interval::last() const {
-  return right_open && right != kPlusInfinity && right != kMinusInfinity ? right - 1 : right;
-}
-
 std::string format_interval(const Interval& interval) {
   std::string text = interval.left_open ? "] " : "[ ";
   text += format_time(interval.left);

@@ -41,12 +41,19 @@ struct Interval {
     // On integer nanoseconds ]t, t+1[ holds no point.
     return left_open && right_open && right - left == 1;
   }
-  bool contains(TimeValue t) const;
+  bool contains(TimeValue t) const {
+    if (left_open ? t <= left : t < left) return false;
+    return !(right_open ? t >= right : t > right);
+  }
   bool bounded() const { return right != kPlusInfinity; }
   /// The smallest point of the set (for an open left end, the next nanosecond).
-  TimeValue first() const;
+  TimeValue first() const {
+    return left_open && left != kMinusInfinity && left != kPlusInfinity ? left + 1 : left;
+  }
   /// The largest point of the set (for an open right end, the previous nanosecond).
-  TimeValue last() const;
+  TimeValue last() const {
+    return right_open && right != kPlusInfinity && right != kMinusInfinity ? right - 1 : right;
+  }
   Interval intersect(const Interval& other) const {
     Interval result = *this;
     if (other.left > left || (other.left == left && other.left_open)) {

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "engines/interpreter/clock_bounds.h"
+#include "engines/interpreter/detail/time_sets.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -22,7 +25,12 @@ std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
 }
 
-Val* slot(const Instr& in, const Frame& f) {
+bool is_jump(Op op) {
+  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
+         op == Op::JumpIfTrueKeep;
+}
+
+inline Val* slot(const Instr& in, const Frame& f) {
   switch (in.scope) {
     case Scope::AtomData:
       return f.atom_data + in.index;
@@ -116,68 +124,18 @@ Val arithmetic(Op op, ValueKind kind, Val a, Val b) {
 // ---------------------------------------------------------------------------------------------
 // Time sets. A clock-dependent value is linear in the delay d (ns) from now: a + b*d.
 
-struct TimedItem {
-  enum class Kind : std::uint8_t { Plain, Linear, Set } kind = Kind::Plain;
-  Val value{};
-  double a = 0.0, b = 0.0;
-  Interval set;  // relative delays
-};
+using detail::relative_set;
+using detail::shift;
+using detail::solve;
+using detail::TimedItem;
 
 double as_double(const TimedItem& item, ValueKind kind) {
   if (item.kind == TimedItem::Kind::Linear) return item.a;
   return kind == ValueKind::Float ? item.value.f : static_cast<double>(item.value.i);
 }
 
-Interval relative_set(bool holds) { return holds ? Interval::all() : Interval::none(); }
-
-/// {d | a + b*d op c}, on integer nanoseconds.
-Interval solve(Op op, double a, double b, double c) {
-  if (b == 0.0) {
-    const bool holds = op == Op::Lt   ? a < c
-                       : op == Op::Le ? a <= c
-                       : op == Op::Gt ? a > c
-                       : op == Op::Ge ? a >= c
-                       : op == Op::Eq ? a == c
-                                      : a != c;
-    return relative_set(holds);
-  }
-  const double x = (c - a) / b;
-  if (b < 0.0) {
-    // Dividing by a negative slope turns the comparison around.
-    op = op == Op::Lt   ? Op::Gt
-         : op == Op::Le ? Op::Ge
-         : op == Op::Gt ? Op::Lt
-         : op == Op::Ge ? Op::Le
-                        : op;
-  }
-  const double limit = 9.0e18;
-  if (x > limit) return op == Op::Lt || op == Op::Le ? Interval::all() : Interval::none();
-  if (x < -limit) return op == Op::Gt || op == Op::Ge ? Interval::all() : Interval::none();
-  const double nearest = std::nearbyint(x);
-  const bool integral = std::fabs(x - nearest) <= 1e-6 * std::max(1.0, std::fabs(x));
-  const auto at = static_cast<TimeValue>(nearest);
-  Interval result = Interval::all();
-  switch (op) {
-    case Op::Lt:
-      if (integral) return {kMinusInfinity, at, false, true};
-      result.right = static_cast<TimeValue>(std::floor(x));
-      return result;
-    case Op::Le:
-      result.right = integral ? at : static_cast<TimeValue>(std::floor(x));
-      return result;
-    case Op::Gt:
-      if (integral) return {at, kPlusInfinity, true, false};
-      result.left = static_cast<TimeValue>(std::ceil(x));
-      return result;
-    case Op::Ge:
-      result.left = integral ? at : static_cast<TimeValue>(std::ceil(x));
-      return result;
-    case Op::Eq:
-      return integral ? Interval::point(at) : Interval::none();
-    default:
-      // `!=` over clocks is refused by the checker; keep the dates where it holds now.
-      return Interval::all();
-  }
+Interval as_set(const TimedItem& item) {
+  return item.kind == TimedItem::Kind::Set ? item.set : relative_set(item.value.b);
 }
 
 Interval hull(const Interval& x, const Interval& y) {
@@ -192,13 +150,6 @@ Interval hull(const Interval& x, const Interval& y) {
     r.right = y.right;
     r.right_open = y.right_open;
   }
-  return r;
-}
-
-Interval shift(const Interval& set, TimeValue now) {
-  Interval r = set;
-  if (r.left != kMinusInfinity) r.left += now;
-  if (r.right != kPlusInfinity) r.right += now;
   return r;
 }
 
@@ -228,25 +179,23 @@ std::string bind_functions(const bipc::ir::System& system, const Externs& extern
 }
 
 CodeEvaluator::CodeEvaluator(const bipc::ir::System& system, const BoundFunctions& functions,
-                             CallContext& call)
-    : system_(system), functions_(functions), call_(call) {
-  stack_.reserve(64);
+                             CallContext& call, const GuardBounds* guard_bounds)
+    : system_(system), functions_(functions), call_(call), guard_bounds_(guard_bounds) {
+  stack_.resize(64);
 }
 
 Val CodeEvaluator::evaluate(const bipc::ir::Code& code, const Frame& frame) {
   if (code.empty()) return make_bool(true);
-  stack_.clear();
-  run(code, frame);
-  return stack_.empty() ? make_bool(true) : stack_.back();
+  const std::size_t depth = run(code, frame);
+  return depth == 0 ? make_bool(true) : stack_[depth - 1];
 }
 
 void CodeEvaluator::execute(const bipc::ir::Code& code, const Frame& frame) {
   if (code.empty()) return;
-  stack_.clear();
   run(code, frame);
 }
 
-Val CodeEvaluator::call(const Instr& in) {
+Val CodeEvaluator::call(const Instr& in, const Val* args_end) {
   const Externs::Function* f = functions_.functions[in.index];
   const std::vector<ValueKind>& kinds = functions_.arg_kinds[in.index];
   const std::size_t count = in.arg;
@@ -258,76 +207,63 @@ Val CodeEvaluator::call(const Instr& in) {
     }
     throw CodeFault{"extern function " + signature + ") has no implementation"};
   }
-  const std::span<const Val> args(stack_.data() + stack_.size() - count, count);
+  const std::span<const Val> args(args_end - count, count);
   // Variadic calls see their own argument kinds; the IR declares them per call site.
   call_.arg_kinds = kinds;
   if (f->variadic && count > kinds.size()) call_.arg_kinds = {};
-  const Val result = f->fn(call_, args);
-  stack_.resize(stack_.size() - count);
-  return result;
+  return f->fn(call_, args);
 }
 
-void CodeEvaluator::run(const bipc::ir::Code& code, const Frame& frame) {
-  const std::vector<Instr>& instrs = code.instrs;
-  for (std::size_t pc = 0; pc < instrs.size(); ++pc) step(instrs[pc], frame, pc);
-}
-
-void CodeEvaluator::step(const Instr& in, const Frame& frame, std::size_t& pc) {
+inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
   switch (in.op) {
     case Op::PushBool:
-      stack_.push_back(make_bool(in.imm.b));
-      break;
+      *sp = make_bool(in.imm.b);
+      return sp + 1;
     case Op::PushInt:
-      stack_.push_back(make_int(in.imm.i));
-      break;
+      *sp = make_int(in.imm.i);
+      return sp + 1;
     case Op::PushFloat:
-      stack_.push_back(make_float(in.imm.f));
-      break;
-    case Op::PushString: {
-      Val v;
-      v.s = functions_.string_ids[in.index];
-      stack_.push_back(v);
-      break;
-    }
+      *sp = make_float(in.imm.f);
+      return sp + 1;
+    case Op::PushString:
+      sp->s = functions_.string_ids[in.index];
+      return sp + 1;
     case Op::Load:
       if (in.scope == Scope::Clock) {
-        stack_.push_back(make_float(
-            clock_value(frame.clocks[in.index], frame.clock_units[in.index], frame.now)));
+        *sp =
+            make_float(clock_value(frame.clocks[in.index], frame.clock_units[in.index], frame.now));
       } else {
-        stack_.push_back(*slot(in, frame));
+        *sp = *slot(in, frame);
       }
-      break;
-    case Op::Store: {
-      const Val v = stack_.back();
-      stack_.pop_back();
+      return sp + 1;
+    case Op::Store:
+      --sp;
       if (in.scope == Scope::Clock) {
         ClockState& clock = frame.clocks[in.index];
-        clock.value_at = v.f;
+        clock.value_at = sp->f;
         clock.since = frame.now;
       } else {
-        *slot(in, frame) = v;
+        *slot(in, frame) = *sp;
       }
-      break;
-    }
+      return sp;
     case Op::StoreRate: {
-      const Val v = stack_.back();
-      stack_.pop_back();
+      --sp;
       ClockState& clock = frame.clocks[in.index];
       clock.value_at = clock_value(clock, frame.clock_units[in.index], frame.now);
       clock.since = frame.now;
-      clock.rate = v.f;
-      break;
+      clock.rate = sp->f;
+      return sp;
     }
     case Op::Neg:
-      stack_.back() = in.kind == ValueKind::Float ? make_float(-stack_.back().f)
-                                                  : make_int(wrap_sub(0, stack_.back().i));
-      break;
+      sp[-1] =
+          in.kind == ValueKind::Float ? make_float(-sp[-1].f) : make_int(wrap_sub(0, sp[-1].i));
+      return sp;
     case Op::Not:
-      stack_.back() = make_bool(!stack_.back().b);
-      break;
+      sp[-1] = make_bool(!sp[-1].b);
+      return sp;
     case Op::BitNot:
-      stack_.back() = make_int(~stack_.back().i);
-      break;
+      sp[-1] = make_int(~sp[-1].i);
+      return sp;
     case Op::Add:
     case Op::Sub:
     case Op::Mul:
@@ -335,205 +271,220 @@ void CodeEvaluator::step(const Instr& in, const Frame& frame, std::size_t& pc) {
     case Op::Mod:
     case Op::BitAnd:
     case Op::BitOr:
-    case Op::BitXor: {
-      const Val b = stack_.back();
-      stack_.pop_back();
-      stack_.back() = arithmetic(in.op, in.kind, stack_.back(), b);
-      break;
-    }
+    case Op::BitXor:
+      --sp;
+      sp[-1] = arithmetic(in.op, in.kind, sp[-1], *sp);
+      return sp;
     case Op::Eq:
     case Op::Ne:
     case Op::Lt:
     case Op::Le:
     case Op::Gt:
-    case Op::Ge: {
-      const Val b = stack_.back();
-      stack_.pop_back();
-      stack_.back() = make_bool(compare(in.op, in.kind, stack_.back(), b, call_.strings));
-      break;
-    }
+    case Op::Ge:
+      --sp;
+      sp[-1] = make_bool(compare(in.op, in.kind, sp[-1], *sp, call_.strings));
+      return sp;
     case Op::IntToFloat:
-      stack_.back() = make_float(static_cast<double>(stack_.back().i));
-      break;
+      sp[-1] = make_float(static_cast<double>(sp[-1].i));
+      return sp;
     case Op::Call: {
-      const Val result = call(in);
-      if (system_.functions[in.index].result) stack_.push_back(result);
-      break;
+      const Val result = call(in, sp);
+      sp -= in.arg;
+      if (system_.functions[in.index].result) *sp++ = result;
+      return sp;
     }
-    case Op::Jump:
-      pc = in.index - 1;
-      break;
-    case Op::JumpIfFalse: {
-      const bool c = stack_.back().b;
-      stack_.pop_back();
-      if (!c) pc = in.index - 1;
-      break;
-    }
-    case Op::JumpIfFalseKeep:
-      if (!stack_.back().b) {
-        pc = in.index - 1;
-      } else {
-        stack_.pop_back();
-      }
-      break;
-    case Op::JumpIfTrueKeep:
-      if (stack_.back().b) {
-        pc = in.index - 1;
-      } else {
-        stack_.pop_back();
-      }
-      break;
     case Op::Pop:
-      stack_.pop_back();
-      break;
+      return sp - 1;
+    case Op::Jump:
+    case Op::JumpIfFalse:
+    case Op::JumpIfFalseKeep:
+    case Op::JumpIfTrueKeep:
+      break;  // run() and holds_when() follow jumps themselves
   }
+  return sp;
+}
+
+std::size_t CodeEvaluator::run(const bipc::ir::Code& code, const Frame& frame) {
+  // Jumps go forward only (compile_code), so each instruction runs at most once and the stack
+  // never holds more values than the code has instructions: no bound check per push.
+  if (stack_.size() < code.instrs.size()) stack_.resize(code.instrs.size());
+  Val* const bottom = stack_.data();
+  Val* sp = bottom;
+  const Instr* const first = code.instrs.data();
+  const Instr* const last = first + code.instrs.size();
+  for (const Instr* in = first; in != last; ++in) {
+    if (!is_jump(in->op)) {
+      sp = apply(*in, frame, sp);
+      continue;
+    }
+    bool jump = true;
+    if (in->op == Op::JumpIfFalse) {
+      --sp;
+      jump = !sp->b;
+    } else if (in->op != Op::Jump) {
+      // `&&` / `||`: the deciding value stays as the result, otherwise the right side follows.
+      jump = in->op == Op::JumpIfTrueKeep ? sp[-1].b : !sp[-1].b;
+      if (!jump) --sp;
+    }
+    if (jump) in = first + in->index - 1;
+  }
+  return static_cast<std::size_t>(sp - bottom);
+}
+
+void CodeEvaluator::join_sides(const detail::PendingJoin& join, TimedItem& top) {
+  const Interval right = as_set(top);
+  top.kind = TimedItem::Kind::Set;
+  if (join.conjunction) {
+    top.set = join.left.intersect(right);
+  } else {
+    top.set = right.empty() ? join.left : hull(join.left, right);
+  }
+}
+
+inline bool CodeEvaluator::timed_step(const Instr& in, const Frame& frame, TimedItem*& sp,
+                                      detail::PendingJoin*& join) {
+  using Kind = TimedItem::Kind;
+  switch (in.op) {
+    case Op::Load:
+      if (in.scope == Scope::Clock) {
+        const ClockState& clock = frame.clocks[in.index];
+        const auto unit = static_cast<double>(frame.clock_units[in.index]);
+        *sp = TimedItem{};
+        sp->kind = Kind::Linear;
+        sp->a = clock_value(clock, frame.clock_units[in.index], frame.now);
+        sp->b = clock.rate / unit;
+      } else {
+        *sp = {Kind::Plain, *slot(in, frame), 0, 0, {}};
+      }
+      ++sp;
+      return true;
+    case Op::PushBool:
+      *sp++ = {Kind::Plain, make_bool(in.imm.b), 0, 0, {}};
+      return true;
+    case Op::PushInt:
+      *sp++ = {Kind::Plain, make_int(in.imm.i), 0, 0, {}};
+      return true;
+    case Op::PushFloat:
+      *sp++ = {Kind::Plain, make_float(in.imm.f), 0, 0, {}};
+      return true;
+    case Op::IntToFloat:
+      // Plain literals and data meet clocks through this conversion: done here, it spares them
+      // the plain machine.
+      if (sp[-1].kind == Kind::Plain) {
+        sp[-1] = {Kind::Plain, make_float(static_cast<double>(sp[-1].value.i)), 0, 0, {}};
+        return true;
+      }
+      return linear_step(in, sp);
+    case Op::Add:
+    case Op::Sub:
+    case Op::Neg:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
+    case Op::Eq:
+    case Op::Ne:
+      return linear_step(in, sp);
+    case Op::Not:
+      if (sp[-1].kind != Kind::Set) return false;
+      // Never produced by checked code (no `!` over clocks); keep the complement's hull.
+      sp[-1].set = sp[-1].set.empty() ? Interval::all() : Interval::none();
+      return true;
+    case Op::JumpIfFalseKeep:
+    case Op::JumpIfTrueKeep:
+      // A `&&`/`||` whose left side depends on time cannot short-circuit: remember it and
+      // combine both sides where the jump would have landed.
+      if (sp[-1].kind != Kind::Set) return false;
+      *join++ = {in.index, in.op == Op::JumpIfFalseKeep, sp[-1].set};
+      --sp;
+      return true;
+    default:
+      return false;
+  }
+}
+
+inline bool CodeEvaluator::linear_step(const Instr& in, TimedItem*& sp) {
+  using Kind = TimedItem::Kind;
+  const bool binary = in.op != Op::Neg && in.op != Op::IntToFloat;
+  const bool timed = sp[-1].kind == Kind::Linear || (binary && sp[-2].kind == Kind::Linear);
+  if (!timed) return false;  // the plain machine's
+  if (!binary) {
+    if (in.op == Op::Neg) {
+      sp[-1].a = -sp[-1].a;
+      sp[-1].b = -sp[-1].b;
+    }
+    return true;
+  }
+  const TimedItem rhs = *--sp;
+  TimedItem& lhs = sp[-1];
+  const double la = as_double(lhs, in.kind), ra = as_double(rhs, in.kind);
+  const double lb = lhs.kind == Kind::Linear ? lhs.b : 0.0;
+  const double rb = rhs.kind == Kind::Linear ? rhs.b : 0.0;
+  if (in.op == Op::Add || in.op == Op::Sub) {
+    const double sign = in.op == Op::Add ? 1.0 : -1.0;
+    lhs = {Kind::Linear, {}, la + sign * ra, lb + sign * rb, {}};
+  } else {
+    // (la + lb d) op (ra + rb d)  <=>  (la - ra) + (lb - rb) d op 0
+    lhs = {Kind::Set, {}, 0, 0, solve(in.op, la - ra, lb - rb, 0.0)};
+  }
+  return true;
+}
+
+TimedItem* CodeEvaluator::plain_step(const Instr& in, const Frame& frame, TimedItem* sp) {
+  // Runs the instruction on the plain values through a one-instruction program.
+  const std::size_t arity =
+      in.op == Op::Call                       ? in.arg
+      : (in.op >= Op::Add && in.op <= Op::Ge) ? 2
+      : (in.op == Op::Neg || in.op == Op::Not || in.op == Op::BitNot || in.op == Op::IntToFloat ||
+         in.op == Op::Pop || in.op == Op::Store || in.op == Op::StoreRate)
+          ? 1
+          : 0;
+  if (stack_.size() < arity + 1) stack_.resize(arity + 1);
+  Val* const operands = stack_.data();
+  sp -= arity;
+  for (std::size_t i = 0; i < arity; ++i) {
+    const TimedItem& item = sp[i];
+    operands[i] = item.kind == TimedItem::Kind::Set ? make_bool(!item.set.empty()) : item.value;
+  }
+  const Val* const results_end = apply(in, frame, operands + arity);
+  for (const Val* v = operands; v != results_end; ++v) {
+    *sp++ = {TimedItem::Kind::Plain, *v, 0, 0, {}};
+  }
+  return sp;
 }
 
 Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& frame) {
   if (code.empty()) return Interval::all();
   // Without clocks a guard holds at all dates or at none: no need for time sets.
   if (frame.clocks == nullptr) return holds(code, frame) ? Interval::all() : Interval::none();
-  using Kind = TimedItem::Kind;
-  // Kept per thread between calls so that a guard's evaluation does not allocate (this runs
-  // for every enabled transition of every fired atom); holds_when never re-enters itself.
-  thread_local std::vector<TimedItem> stack;
-  stack.clear();
-  // A `&&`/`||` whose left side depends on time cannot short-circuit: remember it and combine
-  // both sides where the jump would have landed.
-  struct Pending {
-    std::size_t target;
-    bool conjunction;
-    Interval left;
-  };
-  thread_local std::vector<Pending> pending;
-  pending.clear();
-  auto as_set = [](const TimedItem& item) {
-    return item.kind == Kind::Set ? item.set : relative_set(item.value.b);
-  };
+  if (guard_bounds_ != nullptr) {
+    if (const ClockBounds* bounds = guard_bounds_->find(code)) return bounds->holds_when(frame);
+  }
+  // As in run(), jumps go forward: neither stack outgrows the code.
   const std::vector<Instr>& instrs = code.instrs;
+  if (timed_.size() < instrs.size()) timed_.resize(instrs.size());
+  if (joins_.size() < instrs.size()) joins_.resize(instrs.size());
+  TimedItem* const bottom = timed_.data();
+  TimedItem* sp = bottom;
+  detail::PendingJoin* const no_join = joins_.data();
+  detail::PendingJoin* join = no_join;
   for (std::size_t pc = 0; pc <= instrs.size(); ++pc) {
-    while (!pending.empty() && pending.back().target == pc) {
-      const Pending p = pending.back();
-      pending.pop_back();
-      TimedItem& top = stack.back();
-      const Interval right = as_set(top);
-      top.kind = Kind::Set;
-      if (p.conjunction) {
-        top.set = p.left.intersect(right);
-      } else {
-        top.set = right.empty() ? p.left : hull(p.left, right);
-      }
-    }
+    for (; join != no_join && join[-1].target == pc; --join) join_sides(join[-1], sp[-1]);
     if (pc == instrs.size()) break;
     const Instr& in = instrs[pc];
-    switch (in.op) {
-      case Op::Load:
-        if (in.scope == Scope::Clock) {
-          const ClockState& clock = frame.clocks[in.index];
-          const auto unit = static_cast<double>(frame.clock_units[in.index]);
-          TimedItem item;
-          item.kind = Kind::Linear;
-          item.a = clock_value(clock, frame.clock_units[in.index], frame.now);
-          item.b = clock.rate / unit;
-          stack.push_back(item);
-        } else {
-          stack.push_back({Kind::Plain, *slot(in, frame), 0, 0, {}});
-        }
-        continue;
-      case Op::PushBool:
-        stack.push_back({Kind::Plain, make_bool(in.imm.b), 0, 0, {}});
-        continue;
-      case Op::PushInt:
-        stack.push_back({Kind::Plain, make_int(in.imm.i), 0, 0, {}});
-        continue;
-      case Op::PushFloat:
-        stack.push_back({Kind::Plain, make_float(in.imm.f), 0, 0, {}});
-        continue;
-      case Op::Add:
-      case Op::Sub:
-      case Op::Neg:
-      case Op::IntToFloat:
-      case Op::Lt:
-      case Op::Le:
-      case Op::Gt:
-      case Op::Ge:
-      case Op::Eq:
-      case Op::Ne: {
-        const bool binary = in.op != Op::Neg && in.op != Op::IntToFloat;
-        const bool timed = stack.back().kind == Kind::Linear ||
-                           (binary && stack[stack.size() - 2].kind == Kind::Linear);
-        if (!timed) break;  // handled below by the plain machine
-        if (!binary) {
-          TimedItem& top = stack.back();
-          if (in.op == Op::Neg) {
-            top.a = -top.a;
-            top.b = -top.b;
-          }
-          continue;
-        }
-        TimedItem rhs = stack.back();
-        stack.pop_back();
-        TimedItem& lhs = stack.back();
-        const double la = as_double(lhs, in.kind), ra = as_double(rhs, in.kind);
-        const double lb = lhs.kind == Kind::Linear ? lhs.b : 0.0;
-        const double rb = rhs.kind == Kind::Linear ? rhs.b : 0.0;
-        if (in.op == Op::Add || in.op == Op::Sub) {
-          const double sign = in.op == Op::Add ? 1.0 : -1.0;
-          lhs = {Kind::Linear, {}, la + sign * ra, lb + sign * rb, {}};
-        } else {
-          // (la + lb d) op (ra + rb d)  <=>  (la - ra) + (lb - rb) d op 0
-          lhs = {Kind::Set, {}, 0, 0, solve(in.op, la - ra, lb - rb, 0.0)};
-        }
-        continue;
-      }
-      case Op::Not:
-        if (stack.back().kind == Kind::Set) {
-          // Never produced by checked code (no `!` over clocks); keep the complement's hull.
-          const Interval s = stack.back().set;
-          stack.back().set = s.empty() ? Interval::all() : Interval::none();
-          continue;
-        }
-        break;
-      case Op::JumpIfFalseKeep:
-      case Op::JumpIfTrueKeep:
-        if (stack.back().kind == Kind::Set) {
-          pending.push_back({in.index, in.op == Op::JumpIfFalseKeep, stack.back().set});
-          stack.pop_back();
-          continue;
-        }
-        break;
-      default:
-        break;
-    }
-    // Plain instruction: run it on the plain values through a one-instruction program.
-    if (in.op == Op::Jump || in.op == Op::JumpIfFalse || in.op == Op::JumpIfFalseKeep ||
-        in.op == Op::JumpIfTrueKeep) {
-      const bool c = in.op == Op::Jump ? false : stack.back().value.b;
-      const bool keep = in.op == Op::JumpIfFalseKeep || in.op == Op::JumpIfTrueKeep;
-      const bool jump = in.op == Op::Jump ? true : in.op == Op::JumpIfTrueKeep ? c : !c;
-      if (in.op != Op::Jump && !(keep && jump)) stack.pop_back();
-      if (jump) pc = in.index - 1;
+    if (timed_step(in, frame, sp, join)) continue;
+    if (!is_jump(in.op)) {
+      sp = plain_step(in, frame, sp);
       continue;
     }
-    stack_.clear();
-    const std::size_t arity =
-        in.op == Op::Call                       ? in.arg
-        : (in.op >= Op::Add && in.op <= Op::Ge) ? 2
-        : (in.op == Op::Neg || in.op == Op::Not || in.op == Op::BitNot || in.op == Op::IntToFloat ||
-           in.op == Op::Pop || in.op == Op::Store || in.op == Op::StoreRate)
-            ? 1
-            : 0;
-    for (std::size_t i = stack.size() - arity; i < stack.size(); ++i) {
-      const TimedItem& item = stack[i];
-      stack_.push_back(item.kind == Kind::Set ? make_bool(!item.set.empty()) : item.value);
-    }
-    stack.resize(stack.size() - arity);
-    std::size_t no_jump = pc;
-    step(in, frame, no_jump);
-    for (const Val v : stack_) stack.push_back({Kind::Plain, v, 0, 0, {}});
+    const bool c = in.op == Op::Jump ? false : sp[-1].value.b;
+    const bool keep = in.op == Op::JumpIfFalseKeep || in.op == Op::JumpIfTrueKeep;
+    const bool jump = in.op == Op::Jump ? true : in.op == Op::JumpIfTrueKeep ? c : !c;
+    if (in.op != Op::Jump && !(keep && jump)) --sp;
+    if (jump) pc = in.index - 1;
   }
-  if (stack.empty()) return Interval::all();
-  return shift(as_set(stack.back()), frame.now);
+  if (sp == bottom) return Interval::all();
+  return shift(as_set(sp[-1]), frame.now);
 }
 
 }  // namespace smcbip::engines

@@ -47,6 +47,7 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       work_(system.compounds.size()),
       in_work_(system.connectors.size(), 0),
       queued_(system.compounds.size(), 0),
+      checked_(system.connectors.size(), 0),
       touched_(system.atoms.size(), 0) {
   time_dependent_.reset(system.connectors.size());
   urgent_.reset(system.connectors.size());
@@ -74,14 +75,7 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
   }
 }
 
-void ConnectorCache::touch_atom(Index atom) {
-  if (touched_[atom]) return;
-  touched_[atom] = 1;
-  touched_list_.push_back(atom);
-}
-
-void ConnectorCache::mark_stale(Index k) {
-  if (stale_[k]) return;
+void ConnectorCache::mark_stale_with_binders(Index k) {
   stale_[k] = 1;
   stale_list_.push_back(k);
   add_work(k);
@@ -112,28 +106,25 @@ void ConnectorCache::clear_work() {
   worked_.clear();
 }
 
-void ConnectorCache::begin(TimeValue now, bool full) {
+bool ConnectorCache::start(TimeValue now, bool full) {
   time_passed_ = full || now != last_now_;
   last_now_ = now;
   clear_work();  // a failed computation may have left some behind
-  if (full) {
-    // A failed computation may have left flags behind.
-    stale_.assign(stale_.size(), 1);
-    computed_.assign(computed_.size(), 0);
-    stale_list_.resize(stale_.size());
-    for (Index k = 0; k < stale_list_.size(); ++k) stale_list_[k] = k;
-  } else {
-    for (Index atom : touched_list_) {
-      for (Index k : atom_connectors_[atom]) mark_stale(k);
-    }
-    for (Index k : volatile_) mark_stale(k);
-    if (time_passed_) {
-      for (Index k : time_dependent_) add_work(k);
-    }
-    for (Index compound : ruled_compounds_) queue_compound(compound);
+  if (!full) return false;
+  // A failed computation may have left flags behind.
+  stale_.assign(stale_.size(), 1);
+  computed_.assign(computed_.size(), 0);
+  stale_list_.resize(stale_.size());
+  for (Index k = 0; k < stale_list_.size(); ++k) stale_list_[k] = k;
+  return true;
+}
+
+void ConnectorCache::queue_unchanged_work() {
+  for (Index k : volatile_) mark_stale(k);
+  if (time_passed_) {
+    for (Index k : time_dependent_) add_work(k);
   }
-  for (Index atom : touched_list_) touched_[atom] = 0;
-  touched_list_.clear();
+  for (Index compound : ruled_compounds_) queue_compound(compound);
 }
 
 bool ConnectorCache::next_compound(Index& compound) {

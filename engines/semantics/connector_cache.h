@@ -28,13 +28,34 @@ class ConnectorCache {
   /// Whether the next computation must be a full one.
   bool all_stale() const { return all_stale_; }
   /// The atom's marking, data, resume state or offers may have changed.
-  void touch_atom(bipc::ir::Index atom);
+  [[gnu::always_inline]] void touch_atom(bipc::ir::Index atom) {
+    if (touched_[atom]) return;
+    touched_[atom] = 1;
+    touched_list_.push_back(atom);
+  }
   /// The atoms touched since the last begin().
   const std::vector<bipc::ir::Index>& touched_atoms() const { return touched_list_; }
 
   /// Starts a computation at date `now`: collects the stale connectors (everything when `full`),
-  /// closed upwards over the connectors binding them.
-  void begin(TimeValue now, bool full);
+  /// closed upwards over the connectors binding them. A connector of a touched atom for which
+  /// `keeps_no_values(connector)` holds (it had no values and still can have none) stays as it
+  /// is: neither it nor its binders become stale on its account.
+  template <class KeepsNoValues>
+  void begin(TimeValue now, bool full, KeepsNoValues keeps_no_values) {
+    if (!start(now, full)) {
+      ++generation_;
+      for (bipc::ir::Index atom : touched_list_) {
+        for (bipc::ir::Index k : atom_connectors_[atom]) {
+          if (stale_[k] || checked_[k] == generation_) continue;
+          checked_[k] = generation_;
+          if (!keeps_no_values(k)) mark_stale_with_binders(k);
+        }
+      }
+      queue_unchanged_work();
+    }
+    for (bipc::ir::Index atom : touched_list_) touched_[atom] = 0;
+    touched_list_.clear();
+  }
   /// After a begin() that was not full: the next compound, deepest (largest index) first, with
   /// connectors to compute or whose priorities to evaluate; false when there is none left.
   /// Processing a compound may add enclosing compounds (priorities_changed), never deeper ones.
@@ -59,6 +80,8 @@ class ConnectorCache {
     return stale_[connector] || ruled_[connector] ||
            (time_passed_ && time_dependent_.contains(connector));
   }
+  /// Whether the connector's compound has priority rules.
+  bool ruled(bipc::ir::Index connector) const { return ruled_[connector] != 0; }
   /// Maximal progress restricted a value of the connector: its priorities depend on the date.
   void note_time_dependent(bipc::ir::Index connector) { time_dependent_.insert(connector); }
   void clear_time_dependent(bipc::ir::Index connector) { time_dependent_.erase(connector); }
@@ -73,7 +96,15 @@ class ConnectorCache {
   void end();
 
  private:
-  void mark_stale(bipc::ir::Index connector);
+  /// The first part of begin(): true when the computation is a full one (all stale).
+  bool start(TimeValue now, bool full);
+  /// The last part of a begin() that is not full: volatile connectors become stale; date-
+  /// dependent connectors (when time passed) and compounds with priority rules are queued.
+  void queue_unchanged_work();
+  void mark_stale(bipc::ir::Index connector) {
+    if (!stale_[connector]) mark_stale_with_binders(connector);
+  }
+  void mark_stale_with_binders(bipc::ir::Index connector);
   /// Lists the connector in its compound's work and queues the compound.
   void add_work(bipc::ir::Index connector);
   void queue_compound(bipc::ir::Index compound);
@@ -96,6 +127,8 @@ class ConnectorCache {
   std::vector<std::uint8_t> in_work_, queued_;
   std::priority_queue<bipc::ir::Index> queue_;
   std::vector<bipc::ir::Index> worked_;  // compounds given by next_compound since begin()
+  std::vector<std::uint32_t> checked_;   // per connector: the last begin() that looked at it
+  std::uint32_t generation_ = 0;
   std::vector<std::uint8_t> touched_;
   std::vector<bipc::ir::Index> touched_list_;
   bool all_stale_ = true;

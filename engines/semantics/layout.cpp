@@ -195,6 +195,14 @@ std::vector<DefinedInteraction> with_code(const bipc::ir::ConnectorType& type,
   return defined;
 }
 
+/// The ports every one of `defined` contains; none when there is none defined.
+PortSet required_ports(const std::vector<DefinedInteraction>& defined) {
+  if (defined.empty()) return 0;
+  PortSet required = ~PortSet{0};
+  for (const DefinedInteraction& d : defined) required &= d.ports;
+  return required;
+}
+
 }  // namespace
 
 std::optional<std::vector<PortSet>> defined_interactions(const std::vector<DefineNode>& define,
@@ -210,6 +218,16 @@ std::optional<std::vector<PortSet>> defined_interactions(const std::vector<Defin
 
 std::string build_layout(const System& system, Layout& layout) {
   layout = Layout{};
+  for (const bipc::ir::AtomType& type : system.atom_types) {
+    auto& labelled = layout.labelled_transitions.emplace_back();
+    auto& internal = layout.internal_transitions.emplace_back();
+    for (Index t = 0; t < type.transitions.size(); ++t) {
+      const bipc::ir::Transition& transition = type.transitions[t];
+      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1};
+      if (!transition.from.empty()) entry.first_place = transition.from.front();
+      (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
+    }
+  }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {
     const bipc::ir::AtomType& type = system.atom_types[atom.type];
     layout.atom_data.push_back(layout.data_size);
@@ -249,6 +267,7 @@ std::string build_layout(const System& system, Layout& layout) {
     }
     layout.enumerated.push_back(sets ? 1 : 0);
     layout.defined.push_back(sets ? with_code(type, *sets) : std::vector<DefinedInteraction>{});
+    layout.required_ports.push_back(required_ports(layout.defined.back()));
     // Top level: not bound by another connector of its own compound.
     bool top = true;
     for (Index by : connector.bound_by_all) {

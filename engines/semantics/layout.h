@@ -36,18 +36,29 @@ struct PriorityRule {
   PortSet high = 0;                        // 0 with a connector: `D:*` (every interaction of D)
 };
 
+/// A transition of an atom type as its atoms look for enabled ones.
+struct TransitionEntry {
+  Index transition = 0;
+  Index first_place = bipc::ir::kNone;  // its first `from` place (kNone: it has none)
+  bool more_places = false;             // whether it has other `from` places
+};
+
 struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets
   std::vector<std::size_t> connector_data;                                    // offsets
   std::size_t data_size = 0, place_count = 0, clock_count = 0;
-  std::vector<Val> params;                               // atom parameters, flattened
-  std::vector<TimeValue> clock_units;                    // per flattened clock
+  std::vector<Val> params;             // atom parameters, flattened
+  std::vector<TimeValue> clock_units;  // per flattened clock
+  // Per atom type, in declaration order: transitions labelled by a port, internal ones.
+  std::vector<std::vector<TransitionEntry>> labelled_transitions, internal_transitions;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   /// Per connector: whether `defined` lists every interaction (not when there are too many or
   /// the connector is too wide; it is then maximal_only).
   std::vector<std::uint8_t> enumerated;
   /// Per connector: computes_maximal_only (maximal_interaction.h).
   std::vector<std::uint8_t> maximal_only;
+  /// Per connector: the ports every defined interaction contains (none when not enumerated).
+  std::vector<PortSet> required_ports;
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound
   std::vector<Index> listed_connectors;  // connectors without export, in listing order
   std::vector<std::pair<Index, Index>> internal_ports;   // (atom, port) in listing order

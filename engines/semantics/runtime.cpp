@@ -1,14 +1,14 @@
-// The BIP semantics of one run: atom offers, connector interactions with maximal progress and
-// priorities, timing constraints, and execution. Follows the Verimag reference engine.
+// The BIP semantics of one run: atom offers, timing constraints, the items of a state, and
+// execution (connector interactions: runtime_connectors.cpp; priorities: runtime_priorities.cpp).
+// Follows the Verimag reference engine.
 #include "engines/semantics/runtime.h"
 
 #include <algorithm>
-#include <bit>
 #include <functional>
 #include <sstream>
 
 #include "engines/engines.h"
-#include "engines/semantics/maximal_interaction.h"
+#include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
@@ -16,6 +16,10 @@ namespace smcbip::engines {
 using bipc::Urgency;
 using bipc::ir::AtomType;
 using bipc::ir::kNone;
+using detail::connector_frame;
+using detail::narrow;
+using detail::PortContext;
+using detail::wait;
 
 namespace {
 
@@ -24,101 +28,6 @@ bool reads_clock(const bipc::ir::Code& code) {
     if (in.op == bipc::ir::Op::Load && in.scope == bipc::ir::Scope::Clock) return true;
   }
   return false;
-}
-
-Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
-
-/// a = a.intersect(b), field by field (see compute_items). Inlined so that `a` stays in
-/// registers: through memory, each call stalled on store forwarding.
-[[gnu::always_inline]] inline void narrow(Interval& a, const Interval& b) {
-  if (b.left > a.left || (b.left == a.left && b.left_open)) {
-    a.left = b.left;
-    a.left_open = b.left_open;
-  }
-  if (b.right < a.right || (b.right == a.right && b.right_open)) {
-    a.right = b.right;
-    a.right_open = b.right_open;
-  }
-}
-
-Constraint intersect(const Constraint& a, const Constraint& b) {
-  return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
-}
-
-/// The urgent part of a constraint: lazy none, delayable its closed right end, eager all of it.
-Interval urgent_part(const Constraint& c) {
-  switch (c.urgency) {
-    case Urgency::Lazy:
-      return Interval::none();
-    case Urgency::Delayable:
-      if (c.interval.right == kPlusInfinity || c.interval.right_open || c.interval.empty()) {
-        return Interval::none();
-      }
-      return Interval::point(c.interval.right);
-    case Urgency::Eager:
-      return c.interval;
-  }
-  return Interval::none();
-}
-
-/// How long time may pass from `now` without missing the constraint's urgency.
-Interval wait(const Constraint& c, TimeValue now) {
-  const Interval urgent = urgent_part(c);
-  if (urgent.empty()) return Interval::from(now);
-  if (urgent.contains(now)) return Interval::point(now);
-  // An open left end still bounds the wait at that end (the reference engine's Interval::wait),
-  // which makes `x > 5` eager a time-lock at 5.
-  if (now <= urgent.left) return {now, urgent.left, false, false};
-  return Interval::from(now);
-}
-
-struct PortContext {
-  Runtime* runtime;
-  const InteractionValue* value;
-};
-
-/// The value chosen for a port parameter taking part in an interaction value.
-const PortValue& chosen(const InteractionValue& v, Index port) {
-  if (port < kPortSetBits && v.ports != 0) {
-    const PortSet below = v.ports & ((PortSet{1} << port) - 1);
-    return v.choice[static_cast<std::size_t>(std::popcount(below))];
-  }
-  // Wider connectors: the choice is in port order.
-  return *std::lower_bound(v.choice.begin(), v.choice.end(), port,
-                           [](const PortValue& pv, Index p) { return pv.param < p; });
-}
-
-}  // namespace
-
-struct RuntimeDetail {
-  static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
-    const auto& c = *static_cast<const PortContext*>(context);
-    const PortValue& pv = chosen(*c.value, port);
-    Runtime& r = *c.runtime;
-    if (pv.from_atom) {
-      const AtomType& type = r.system_.atom_types[r.system_.atoms[pv.atom].type];
-      return &r.state_.data[r.layout_.atom_data[pv.atom] + type.ports[pv.port].data[arg]];
-    }
-    InteractionValue& sub = r.values_[pv.sub];
-    const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
-    return &sub.data[type.export_data[arg]];
-  }
-  static Val* instance_slot(const void* context, Index atom, std::uint16_t slot) {
-    Runtime& r = *const_cast<Runtime*>(static_cast<const Runtime*>(context));
-    return &r.state_.data[r.layout_.atom_data[atom] + slot];
-  }
-};
-
-namespace {
-
-/// The frame of connector code (guard, up, down) over one interaction value.
-Frame connector_frame(InteractionValue& value, const PortContext& context, TimeValue now) {
-  Frame f;
-  f.connector_data = value.data.data();
-  f.port_slot = &RuntimeDetail::port_slot;
-  f.port_context = &context;
-  f.now = now;
-  return f;
 }
 
 }  // namespace
@@ -138,8 +47,17 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
       cache_(system_, layout) {
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
-    port_values_.resize(port_values_.size() +
-                        system_.atom_types[system_.atoms[a].type].ports.size());
+    for (const bipc::ir::Port& port : system_.atom_types[system_.atoms[a].type].ports) {
+      port_values_.emplace_back();
+      port_data_begin_.push_back(port_data_slots_.size());
+      for (Index slot : port.data) port_data_slots_.push_back(layout.atom_data[a] + slot);
+    }
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    const bool has_clocks = !system_.atom_types[system_.atoms[a].type].clocks.empty();
+    atom_slots_.push_back({layout.atom_data[a], layout.params.data() + layout.atom_params[a],
+                           layout.atom_clocks[a], layout.clock_units.data() + layout.atom_clocks[a],
+                           has_clocks});
   }
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
   bounding_atoms_.reset(system_.atoms.size());
@@ -148,6 +66,8 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
     if (!layout.rules[c].empty()) compounds_with_rules_.push_back(c);
   }
   index_listing();
+  index_single_atom_ports();
+  index_required_offers();
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(model, functions, call_, options.threads);
   }
@@ -176,12 +96,12 @@ Frame Runtime::atom_frame(AtomScratch s, Index atom) {
 }
 
 Frame Runtime::atom_frame(Index atom) {
+  const AtomSlots& slots = atom_slots_[atom];
   Frame f;
-  f.atom_data = state_.data.data() + layout_.atom_data[atom];
-  f.atom_params = layout_.params.data() + layout_.atom_params[atom];
-  const bool has_clocks = !system_.atom_types[system_.atoms[atom].type].clocks.empty();
-  f.clocks = has_clocks ? state_.clocks.data() + layout_.atom_clocks[atom] : nullptr;
-  f.clock_units = layout_.clock_units.data() + layout_.atom_clocks[atom];
+  f.atom_data = state_.data.data() + slots.data;
+  f.atom_params = slots.params;
+  f.clocks = slots.has_clocks ? state_.clocks.data() + slots.clocks : nullptr;
+  f.clock_units = slots.clock_units;
   f.instance_slot = &RuntimeDetail::instance_slot;
   f.instance_context = this;
   f.now = state_.now;
@@ -278,7 +198,8 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
   return true;
 }
 
-bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label) {
+bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label,
+                              const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
@@ -295,26 +216,40 @@ bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index
     }
     state_.marking[base + p] = 1;
   }
-  s.eval.execute(t.action, atom_frame(s, atom));
+  s.eval.execute(t.action, f);
   if (t.resume) {
     state_.resume_pending[atom] = 1;
-    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, atom_frame(s, atom));
+    state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, f);
     if (!s.on_worker) note_time_bound(atom);
   }
-  return check_invariants(s, atom);
+  // An atom without invariants keeps `all` (its time bound is noted where its resume changes).
+  return type.invariants.empty() || check_invariants(s, atom);
+}
+
+inline bool Runtime::from_marked(const TransitionEntry& entry,
+                                 const bipc::ir::Transition& transition, std::size_t base) const {
+  if (entry.first_place == kNone) return true;
+  if (!state_.marking[base + entry.first_place]) return false;
+  if (!entry.more_places) return true;
+  for (Index p : transition.from) {
+    if (!state_.marking[base + p]) return false;
+  }
+  return true;
 }
 
 bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
+  const std::vector<TransitionEntry>& internal =
+      layout_.internal_transitions[system_.atoms[atom].type];
+  if (internal.empty()) return true;
+  const Frame f = atom_frame(s, atom);
   for (;;) {
     Index enabled = kNone;
-    for (Index t = 0; t < type.transitions.size(); ++t) {
+    for (const TransitionEntry& entry : internal) {
+      const Index t = entry.transition;
       const bipc::ir::Transition& tr = type.transitions[t];
-      if (tr.port != kNone) continue;
-      bool marked = true;
-      for (Index p : tr.from) marked = marked && state_.marking[base + p];
-      if (!marked || !s.eval.holds(tr.guard, atom_frame(s, atom))) continue;
+      if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, f)) continue;
       if (enabled != kNone) {
         return s.fail(1, "non-deterministic choice between internal transitions in " +
                              layout_.atom_names[atom] + "!");
@@ -322,24 +257,22 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
       enabled = t;
     }
     if (enabled == kNone) return true;
-    if (!fire_transition(s, atom, enabled, kNone)) return false;
+    if (!fire_transition(s, atom, enabled, kNone, f)) return false;
   }
 }
 
-bool Runtime::update_atom(AtomScratch s, Index atom) {
+bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
-  const Frame f = atom_frame(s, atom);
-  for (Index t = 0; t < type.transitions.size(); ++t) {
+  const Index type_index = system_.atoms[atom].type;
+  for (const TransitionEntry& entry : layout_.labelled_transitions[type_index]) {
+    const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
-    if (tr.port == kNone) continue;
-    bool marked = true;
-    for (Index p : tr.from) marked = marked && state_.marking[base + p];
-    if (!marked) continue;
-    const Interval when = s.eval.holds_when(tr.guard, f);
+    if (!from_marked(entry, tr, base)) continue;
+    const Interval when = tr.guard.empty() ? Interval::all() : s.eval.holds_when(tr.guard, f);
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
@@ -441,419 +374,6 @@ bool Runtime::check_atom_priority_cycle(AtomScratch s, Index atom) {
   return true;
 }
 
-bool Runtime::rule_guard(const PriorityRule& rule) {
-  const bipc::ir::Priority& p = system_.compounds[rule.compound].priorities[rule.rule];
-  if (p.guard.empty()) return true;
-  Frame f;
-  f.instance_slot = &RuntimeDetail::instance_slot;
-  f.instance_context = this;
-  f.now = state_.now;
-  return eval_.holds(p.guard, f);
-}
-
-namespace {
-
-bool subset(PortSet a, PortSet b) { return (a & ~b) == 0; }
-
-std::string interaction_name(const bipc::ir::System& system, Index connector, PortSet ports) {
-  std::string text = bipc::ir::last_component(system.connectors[connector].path) + ":";
-  const auto& type = system.connector_types[system.connectors[connector].type];
-  for (std::size_t i = 0; i < type.ports.size(); ++i) {
-    if (ports & (PortSet{1} << i)) text += " " + type.ports[i].first;
-  }
-  return text;
-}
-
-}  // namespace
-
-bool Runtime::applies_low(const PriorityRule& rule, const RuleNode& x) const {
-  if (rule.low_connector == kNone) {
-    return layout_.top_level[x.first] && x.first != rule.high_connector;
-  }
-  return x.first == rule.low_connector &&
-         (x.second == rule.low || (maximal_progress_ && subset(x.second, rule.low)));
-}
-
-void Runtime::add_defined(Index connector, std::vector<RuleNode>& out) const {
-  for (const DefinedInteraction& d : layout_.defined[connector])
-    out.push_back({connector, d.ports});
-}
-
-std::vector<Runtime::RuleNode> Runtime::high_side(const PriorityRule& rule) const {
-  std::vector<RuleNode> out;
-  if (rule.high_connector == kNone) {
-    for (Index k : system_.compounds[rule.compound].connectors) {
-      if (layout_.top_level[k] && k != rule.low_connector) add_defined(k, out);
-    }
-  } else if (rule.high == 0) {
-    add_defined(rule.high_connector, out);
-  } else {
-    out.push_back({rule.high_connector, rule.high});
-  }
-  return out;
-}
-
-std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const {
-  std::vector<RuleNode> out;
-  if (rule.low_connector != kNone) {
-    out.push_back({rule.low_connector, rule.low});
-    return out;
-  }
-  for (Index k : system_.compounds[rule.compound].connectors) {
-    if (layout_.top_level[k] && k != rule.high_connector) add_defined(k, out);
-  }
-  return out;
-}
-
-bool Runtime::check_compound_priority_cycles() {
-  acyclic_rule_sets_.resize(layout_.rules.size());
-  for (const Index compound : compounds_with_rules_) {
-    const std::vector<PriorityRule>& rules = layout_.rules[compound];
-    std::vector<bool> active(rules.size());
-    for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
-    // The search depends only on which rules are active: a set found acyclic stays so.
-    if (acyclic_rule_sets_[compound].count(active)) continue;
-    // Depth-first over the static rule chains from each low side (E/Interaction.cpp of the
-    // reference engine): a high side included in an interaction already on the path closes
-    // a cycle.
-    std::vector<RuleNode> cycle;
-    std::function<bool(const std::vector<RuleNode>&, int)> search =
-        [&](const std::vector<RuleNode>& path, int depth) {
-          if (depth > 64) return false;
-          const RuleNode x = path.back();
-          for (std::size_t r = 0; r < rules.size(); ++r) {
-            if (!active[r] || !applies_low(rules[r], x)) continue;
-            const RuleNode own_low{rules[r].low_connector, rules[r].low};
-            for (const RuleNode& d : high_side(rules[r])) {
-              std::vector<RuleNode> next = path;
-              if (rules[r].low_connector != kNone && x != own_low) next.push_back(own_low);
-              next.push_back(d);
-              for (std::size_t i = 0; i + 1 < next.size(); ++i) {
-                if (next[i].first == d.first && subset(d.second, next[i].second)) {
-                  cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
-                  if (d != next[i]) cycle.push_back(next[i]);
-                  return true;
-                }
-              }
-              if (search(next, depth + 1)) return true;
-            }
-          }
-          return false;
-        };
-    for (std::size_t r = 0; r < rules.size(); ++r) {
-      if (!active[r]) continue;
-      for (const RuleNode& low : low_side(rules[r])) {
-        if (!search({low}, 0)) continue;
-        std::string text;
-        for (std::size_t i = 0; i < cycle.size(); ++i) {
-          text += (i ? " < " : "") + interaction_name(system_, cycle[i].first, cycle[i].second);
-        }
-        return fail(3, "cycle in priorities! (" + text + ")");
-      }
-    }
-    acyclic_rule_sets_[compound].insert(std::move(active));
-  }
-  return true;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Connector interactions.
-
-void Runtime::restrict_by(Constraint& c, const Constraint& dominator) const {
-  // A dominated value may only run where its dominator cannot (TimingConstraint::applyPriority
-  // of the reference engine): after the dominator's window if that meets the waiting window,
-  // else before it. Invariants and pending resumes bound the waiting window too: a dominator
-  // that time cannot reach before they force a step must not block the dominated value (else
-  // writers_buffer's W1 write, dominated by W2's next period beyond W1's invariant, time-locks).
-  const Interval window = wait(c, state_.now).intersect(time_bound_);
-  const Interval meet = dominator.interval.intersect(window);
-  Interval allowed;
-  if (!meet.empty()) {
-    if (meet.right == kPlusInfinity) {
-      c.interval = Interval::none();
-      return;
-    }
-    allowed = {meet.right, kPlusInfinity, !meet.right_open, false};
-  } else if (dominator.interval.left != kMinusInfinity && state_.now < dominator.interval.left) {
-    allowed = {kMinusInfinity, dominator.interval.left, false, !dominator.interval.left_open};
-  } else {
-    if (dominator.interval.right == kPlusInfinity) {
-      c.interval = Interval::none();
-      return;
-    }
-    allowed = {dominator.interval.right, kPlusInfinity, !dominator.interval.right_open, false};
-  }
-  c.interval = c.interval.intersect(allowed);
-}
-
-bool Runtime::dominated_locally(const InteractionValue& low, const InteractionValue& high) const {
-  // low <= high: port set inclusion, and for each sub-connector port of low, its
-  // sub-interaction included in high's.
-  if (!subset(low.ports, high.ports)) return false;
-  for (std::size_t i = 0, j = 0; i < 64 && (low.ports >> i) != 0; ++i) {
-    if (!(low.ports & (PortSet{1} << i))) continue;
-    const PortValue& lv = low.choice[j++];
-    const PortSet below = high.ports & ((PortSet{1} << i) - 1);
-    const PortValue& hv = high.choice[static_cast<std::size_t>(std::popcount(below))];
-    if (lv.from_atom != hv.from_atom) return false;
-    if (!lv.from_atom && lv.sub != hv.sub && !dominated_locally(values_[lv.sub], values_[hv.sub])) {
-      return false;
-    }
-  }
-  return true;
-}
-
-Index Runtime::acquire_value() {
-  // Slots are reused with their vectors' capacity: no allocation once the pool has grown.
-  if (free_values_.empty()) {
-    values_.emplace_back();
-    return static_cast<Index>(values_.size() - 1);
-  }
-  const Index slot = free_values_.back();
-  free_values_.pop_back();
-  values_[slot].choice.clear();
-  return slot;
-}
-
-void Runtime::compute_connector(Index k) {
-  if (!cache_.claim(k)) return;
-  // Connectors binding this one are stale too, so nothing refers to its old values any more.
-  free_values_.insert(free_values_.end(), connector_values_[k].begin(), connector_values_[k].end());
-  connector_values_[k].clear();
-  // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
-  if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
-  ConnectorScratch& scratch = scratch_[scratch_depth_];
-  const struct DepthGuard {
-    std::size_t& depth;
-    ~DepthGuard() { --depth; }
-  } depth_guard{++scratch_depth_};
-  gather_offers(k, scratch.offers);
-  // One defined interaction (a rendezvous) is its own largest: enumerating it is as quick.
-  const bool largest_pays = !layout_.enumerated[k] || layout_.defined[k].size() > 1;
-  if (layout_.maximal_only[k] && largest_pays && maximal_progress_ &&
-      add_largest_values(k, scratch)) {
-    return;
-  }
-  if (!layout_.enumerated[k]) {
-    throw UnsupportedRun{"connector '" + layout_.connector_names[k] +
-                         "': its enabled ports offer different timing constraints (or maximal "
-                         "progress is disabled), so its interactions would have to be enumerated, "
-                         "and it has too many for that"};
-  }
-  const std::size_t n = system_.connectors[k].bound.size();
-  const std::vector<DefinedInteraction>& defined = layout_.defined[k];
-  for (std::uint32_t d = 0; d < defined.size(); ++d) {
-    const PortSet ports = defined[d].ports;
-    scratch.members.clear();
-    bool possible = true;
-    for (Index i = 0; i < n && possible; ++i) {
-      if (!(ports & (PortSet{1} << i))) continue;
-      scratch.members.push_back(i);
-      possible = !scratch.offers[i].empty();
-    }
-    if (possible) add_values(k, d, ports, defined[d].code, scratch);
-  }
-}
-
-void Runtime::gather_offers(Index k, std::vector<std::vector<PortValue>>& offers) {
-  const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
-  const std::size_t n = connector.bound.size();
-  if (offers.size() < n) offers.resize(n);
-  for (std::size_t i = 0; i < n; ++i) offers[i].clear();
-  for (Index i = 0; i < n; ++i) {
-    for (const bipc::ir::PortRef& ref : connector.bound[i]) {
-      if (ref.kind == bipc::ir::PortRef::Kind::Atom) {
-        if (state_.resume_pending[ref.instance]) continue;
-        const auto& v = port_values_[port_offset_[ref.instance] + ref.port];
-        if (v) offers[i].push_back({true, ref.instance, ref.port, kNone, v->constraint, i});
-        continue;
-      }
-      compute_connector(ref.instance);
-      for (Index sub : connector_values_[ref.instance]) {
-        const InteractionValue& sv = values_[sub];
-        const Constraint& c = connector.bound_through_compound[i] ? sv.after : sv.raw;
-        if (connector.bound_through_compound[i] && c.interval.empty()) continue;
-        offers[i].push_back({false, 0, 0, sub, c, i});
-      }
-    }
-  }
-}
-
-bool Runtime::add_largest_values(Index k, ConnectorScratch& scratch) {
-  // Every smaller interaction is dominated by the largest for good only when they all offer
-  // one constraint open to the right: it restricts them to after its window, which never ends.
-  const std::size_t n = system_.connectors[k].bound.size();
-  const Constraint* common = nullptr;
-  scratch.enabled.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (const PortValue& offer : scratch.offers[i]) {
-      if (!common) common = &offer.constraint;
-      if (offer.constraint.interval != common->interval ||
-          offer.constraint.urgency != common->urgency) {
-        return false;
-      }
-    }
-    scratch.enabled[i] = scratch.offers[i].empty() ? 0 : 1;
-  }
-  if (!common) return true;  // nothing offered: no value
-  if (common->interval.right != kPlusInfinity) return false;
-  const auto& type = system_.connector_types[system_.connectors[k].type];
-  if (!largest_enabled_interaction(type.define, scratch.enabled, scratch.members)) return true;
-  PortSet ports = 0;
-  if (n <= kPortSetBits) {
-    for (Index i : scratch.members) ports |= PortSet{1} << i;
-  }
-  int code = -1;
-  for (std::size_t c = 0; c < type.interactions.size() && code < 0; ++c) {
-    if (std::equal(type.interactions[c].ports.begin(), type.interactions[c].ports.end(),
-                   scratch.members.begin(), scratch.members.end())) {
-      code = static_cast<int>(c);
-    }
-  }
-  add_values(k, InteractionValue::kLargest, ports, code, scratch);
-  return true;
-}
-
-void Runtime::add_values(Index k, std::uint32_t defined, PortSet ports, int code,
-                         ConnectorScratch& scratch) {
-  const auto& type = system_.connector_types[system_.connectors[k].type];
-  const bipc::ir::InteractionCode* on =
-      code >= 0 ? &type.interactions[static_cast<std::size_t>(code)] : nullptr;
-  const std::vector<Index>& members = scratch.members;
-  std::vector<std::size_t>& pick = scratch.pick;
-  pick.assign(members.size(), 0);
-  IndexList& result = connector_values_[k];
-  for (;;) {
-    const Index slot = acquire_value();
-    InteractionValue& value = values_[slot];
-    value.connector = k;
-    value.defined = defined;
-    value.code = code;
-    value.ports = ports;
-    value.raw = Constraint{};
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      const PortValue& pv = scratch.offers[members[m]][pick[m]];
-      value.choice.push_back(pv);
-      value.raw = intersect(value.raw, pv.constraint);
-    }
-    bool kept = false;
-    if (!value.raw.interval.empty()) {
-      value.data.assign(
-          state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]),
-          state_.data.begin() +
-              static_cast<std::ptrdiff_t>(layout_.connector_data[k] + type.data.size()));
-      const PortContext context{this, &value};
-      const Frame f = connector_frame(value, context, state_.now);
-      if (!on || eval_.holds(on->guard, f)) {
-        if (on) eval_.execute(on->up, f);
-        value.after = value.raw;
-        result.push_back(slot);
-        kept = true;
-      }
-    }
-    if (!kept) free_values_.push_back(slot);
-    // Next combination: the last port varies fastest (first port outermost).
-    std::size_t m = members.size();
-    while (m > 0) {
-      --m;
-      if (++pick[m] < scratch.offers[members[m]].size()) break;
-      pick[m] = 0;
-      if (m == 0) {
-        m = members.size() + 1;
-        break;
-      }
-    }
-    if (members.empty() || m == members.size() + 1) break;
-  }
-}
-
-void Runtime::apply_priorities(InteractionValue& value, Index k) {
-  // Maximal progress: every enabled value of the same connector strictly above this one.
-  if (maximal_progress_) {
-    for (Index w : connector_values_[k]) {
-      const InteractionValue& other = values_[w];
-      if (&other == &value) continue;
-      if (dominated_locally(value, other) && !dominated_locally(other, value)) {
-        restrict_by(value.after, other.raw);
-        cache_.note_time_dependent(k);
-      }
-    }
-  }
-  const std::vector<PriorityRule>& rules = layout_.rules[system_.connectors[k].parent];
-  if (rules.empty()) return;
-  // Rule closure: the dominators of every high side reached from this value through active
-  // rules, whether or not the interactions in between are enabled.
-  std::vector<RuleNode> visited;
-  std::function<void(const RuleNode&)> dominate = [&](const RuleNode& low) {
-    if (std::find(visited.begin(), visited.end(), low) != visited.end()) return;
-    visited.push_back(low);
-    for (const PriorityRule& rule : rules) {
-      if (!applies_low(rule, low) || !rule_guard(rule)) continue;
-      for (const RuleNode& high : high_side(rule)) {
-        compute_connector(high.first);
-        for (Index w : connector_values_[high.first]) {
-          const InteractionValue& other = values_[w];
-          if (other.ports == high.second ||
-              (maximal_progress_ && subset(high.second, other.ports))) {
-            restrict_by(value.after, other.raw);
-          }
-        }
-        dominate(high);
-      }
-    }
-  };
-  dominate({k, value.ports});
-}
-
-void Runtime::begin_values(bool full) {
-  if (full) {
-    // Every slot becomes free, keeping its vectors for reuse.
-    free_values_.clear();
-    for (Index v = static_cast<Index>(values_.size()); v-- > 0;) free_values_.push_back(v);
-    connector_values_.resize(system_.connectors.size());
-    for (IndexList& list : connector_values_) list.clear();
-  }
-  cache_.begin(state_.now, full);
-}
-
-void Runtime::recompute_priorities(Index k) {
-  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
-  cache_.clear_time_dependent(k);
-  bool urgent = false;
-  for (Index v : connector_values_[k]) {
-    apply_priorities(values_[v], k);
-    urgent =
-        urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
-  }
-  cache_.set_urgent(k, urgent);
-  cache_.priorities_changed(k);
-  count_connector_items(k);
-}
-
-void Runtime::compute_compound(const std::vector<Index>& connectors) {
-  // All values of the compound first: priorities compare them with each other.
-  for (Index k : connectors) {
-    if (cache_.stale(k)) compute_connector(k);
-  }
-  for (Index k : connectors) {
-    if (cache_.needs_priorities(k)) recompute_priorities(k);
-  }
-}
-
-void Runtime::compute_values(bool full) {
-  // Compounds bottom-up: a compound export of a sub-connector needs its values after
-  // priorities. Deeper compounds have larger indices than their parents.
-  if (full) {
-    for (Index c = static_cast<Index>(system_.compounds.size()); c-- > 0;) {
-      compute_compound(system_.compounds[c].connectors);
-    }
-    return;
-  }
-  // Only the compounds, and their connectors, that the cache finds work in: no step walks
-  // every connector.
-  for (Index c = 0; cache_.next_compound(c);) compute_compound(cache_.work(c));
-}
-
 bool Runtime::compute_items() {
   items_.clear();
   items_listed_ = true;
@@ -904,13 +424,13 @@ void Runtime::list_items() const {
     items_.pop_back();
     return nullptr;
   };
-  for (Index k : layout_.listed_connectors) {
-    for (Index v : connector_values_[k]) {
+  listed_with_values_.for_each([&](std::size_t position) {
+    for (Index v : connector_values_[layout_.listed_connectors[position]]) {
       const Constraint& after = values_[v].after;
       if (after.interval.empty()) continue;
       if (Item* item = add(after)) item->value = v;
     }
-  }
+  });
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
     const auto& v = port_values_[port_offset_[atom] + port];
@@ -991,10 +511,12 @@ bool Runtime::execute_value(Index index) {
 bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
   const auto& v = port_values_[port_offset_[atom] + port];
   if (!v) return true;
-  if (!fire_transition(s, atom, v->transition, port) || !run_internal_transitions(s, atom)) {
+  // One frame serves the whole firing: the date and the state's buffers stay put.
+  const Frame f = atom_frame(s, atom);
+  if (!fire_transition(s, atom, v->transition, port, f) || !run_internal_transitions(s, atom)) {
     return false;
   }
-  return state_.resume_pending[atom] || update_atom(s, atom);
+  return state_.resume_pending[atom] || update_atom(s, atom, f);
 }
 
 void Runtime::append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const {

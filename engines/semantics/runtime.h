@@ -22,6 +22,7 @@
 #include "engines/semantics/index_set.h"
 #include "engines/semantics/item_index.h"
 #include "engines/semantics/layout.h"
+#include "engines/semantics/position_set.h"
 #include "engines/stochastic/random_stream.h"
 
 namespace smcbip::engines {
@@ -177,8 +178,9 @@ class Runtime {
   double clock_value(Index atom, Index clock, TimeValue at) const;
   /// The first date from `now` at which that clock reaches `value` (kPlusInfinity if never).
   TimeValue clock_reaches(Index atom, Index clock, double value) const;
-  /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now.
-  std::vector<double> stochastic_params(Index atom, Index port);
+  /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now, in `out`
+  /// (a buffer the caller reuses).
+  void stochastic_params(Index atom, Index port, std::vector<double>& out);
   /// `holder.port(d=1;)` entries of an interaction, as the trace prints them.
   std::string format_ports(const InteractionValue& value) const;
   /// The violated deadlines at `now` (real time), as trace lines without the prefix.
@@ -204,37 +206,83 @@ class Runtime {
   };
   // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
   struct ConnectorScratch {
-    std::vector<std::vector<PortValue>> offers;
-    std::vector<Index> members;  // port parameters of the port set being combined
-    std::vector<std::size_t> pick;
-    std::vector<std::uint8_t> enabled;  // per port parameter: whether it has an offer
+    std::vector<PortValue> offers;           // the ports' offers, port after port
+    std::vector<std::uint32_t> first_offer;  // per port, its first offer; then offers.size()
+    std::vector<Index> members;              // the ports of the port set being combined
+    std::vector<std::uint32_t> pick;         // per member, the offer of the combination
+    std::vector<std::uint8_t> enabled;       // per port parameter: whether it has an offer
+  };
+  // What the values of one port set of a connector share.
+  struct ValueShape {
+    Index connector = 0;
+    std::uint32_t defined = 0;  // InteractionValue::defined
+    PortSet ports = 0;
+    int code = -1;  // InteractionValue::code
   };
   AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
   Frame atom_frame(Index atom);
   Frame atom_frame(AtomScratch s, Index atom);
-  bool update_atom(Index atom) { return update_atom(main_scratch(), atom); }
-  bool update_atom(AtomScratch s, Index atom);
+  bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
+  /// `f`: the atom's frame (atom_frame).
+  bool update_atom(AtomScratch s, Index atom, const Frame& f);
   bool run_internal_transitions(Index atom) {
     return run_internal_transitions(main_scratch(), atom);
   }
   bool run_internal_transitions(AtomScratch s, Index atom);
-  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label);
+  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label,
+                       const Frame& f);
+  /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
+  [[gnu::always_inline]] inline bool from_marked(const TransitionEntry& entry,
+                                                 const bipc::ir::Transition& transition,
+                                                 std::size_t base) const;
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
   bool check_invariants(AtomScratch s, Index atom);
   bool check_atom_priority_cycle(AtomScratch s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
-  /// Every offer of the connector's port parameters, into `offers` (one list per parameter).
-  void gather_offers(Index connector, std::vector<std::vector<PortValue>>& offers);
+  /// Fills required_offers_ and has_sub_connectors_.
+  void index_required_offers();
+  /// Whether a port every interaction of the connector contains binds only atom ports, none of
+  /// which offers anything: then the connector has no interaction.
+  bool misses_required_atom_port(Index connector) const;
+  /// Whether the connector had no values and, its atoms' offers being what they are, still
+  /// has none: the optimised scheduler then leaves it as it is.
+  bool keeps_no_values(Index connector) const;
+  /// Computes the connectors bound to the connector's ports, in port order.
+  void compute_sub_connectors(Index connector);
+  /// Frees the connector's values of the last computation.
+  void release_values(Index connector);
+  /// Whether the connector's values may come from add_largest_values: a maximal_only connector
+  /// under maximal progress that is not a rendezvous (one defined interaction is its own
+  /// largest, and enumerating it is as quick).
+  bool tries_largest(Index connector) const;
+  /// The connector's interaction values, from its ports' offers.
+  void compute_interactions(Index connector);
+  /// Per port parameter, the offers of the atom ports and sub-connectors it binds.
+  void gather_offers(Index connector, ConnectorScratch& scratch);
   /// Values of a maximal_only connector under maximal progress when its offers allow
   /// (maximal_interaction.h); false when they do not and the defined ones must be enumerated.
   bool add_largest_values(Index connector, ConnectorScratch& scratch);
-  /// The connector's values for one port set (`members`, increasing), one per combination of
-  /// the members' offers (the last member varies fastest), kept when the guard holds.
-  void add_values(Index connector, std::uint32_t defined, PortSet ports, int code,
-                  ConnectorScratch& scratch);
+  /// The values of defined interaction `d`: one per combination of its ports' offers.
+  void add_interactions(Index connector, std::uint32_t d, ConnectorScratch& scratch);
+  /// The values of a port set (`scratch.members`, increasing; `scratch.pick` at their first
+  /// offers): one per combination of the members' offers, the last member varying fastest.
+  void add_combinations(const ValueShape& shape, ConnectorScratch& scratch);
+  /// compute_interactions for a connector whose ports each bind one atom port.
+  void compute_single_offer_interactions(Index connector);
+  /// Fills single_atom_ports_.
+  void index_single_atom_ports();
+  /// A new value of the shape, with no port chosen yet.
+  [[gnu::always_inline]] inline Index start_value(const ValueShape& shape);
+  /// Chooses the offer for the value's next port.
+  [[gnu::always_inline]] static inline void add_choice(InteractionValue& value,
+                                                       const PortValue& offer);
+  /// Keeps the value among the connector's if its constraint and guard allow, else frees it.
+  void keep_value_if_allowed(Index connector, Index slot);
+  /// Copies the connector's data into the value and runs the guard, then `up` if it holds.
+  bool connector_code_allows(InteractionValue& value);
   /// A free slot of values_ for a new value (its vectors keep their capacity).
-  Index acquire_value();
+  [[gnu::always_inline]] inline Index acquire_value();
   void begin_values(bool full);
   /// Every connector's values, or (incremental) those of the connectors the cache finds stale.
   void compute_values(bool full);
@@ -302,9 +350,22 @@ class Runtime {
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
+  // Per atom: where its slots are (atom_frame).
+  struct AtomSlots {
+    std::size_t data = 0;
+    const Val* params = nullptr;
+    std::size_t clocks = 0;
+    const TimeValue* clock_units = nullptr;
+    bool has_clocks = false;
+  };
+  std::vector<AtomSlots> atom_slots_;
   // Per atom port (flattened by atom, port): its offer, if any.
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
+  // Per atom port (flattened likewise): its first entry in port_data_slots_, which lists the
+  // state slots of the ports' parameters (connector code reads and writes them).
+  std::vector<std::size_t> port_data_begin_;
+  std::vector<std::size_t> port_data_slots_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
   // The atoms whose pending resume or invariant bounds the time that may pass (the others
@@ -319,6 +380,25 @@ class Runtime {
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
   std::vector<IndexList> connector_values_;
+  // Per connector whose port parameters each bind exactly one atom port: those atom ports, in
+  // parameter order (empty for other connectors).
+  struct SingleAtomPort {
+    Index atom = 0, port = 0;
+    std::size_t offer = 0;  // index into port_values_
+  };
+  std::vector<std::vector<SingleAtomPort>> single_atom_ports_;
+  // The listed connectors that have values, by position in layout_.listed_connectors.
+  PositionSet listed_with_values_;
+  // Per connector: the atom ports bound to its port parameters that every defined interaction
+  // contains (parameters binding atom ports only), parameter by parameter; and whether a
+  // parameter binds a sub-connector.
+  struct RequiredOffer {
+    Index atom = 0;
+    std::size_t port_value = 0;  // index into port_values_
+    bool ends_group = false;     // the last atom port of its parameter
+  };
+  std::vector<std::vector<RequiredOffer>> required_offers_;
+  std::vector<std::uint8_t> has_sub_connectors_;
   std::vector<InteractionValue> values_;
   std::vector<Index> free_values_;
   std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references

@@ -12,6 +12,7 @@ void Runtime::index_listing() {
   for (Index i = 0; i < layout_.listed_connectors.size(); ++i) {
     listed_position_[layout_.listed_connectors[i]] = i;
   }
+  listed_with_values_.resize(layout_.listed_connectors.size());
   internal_ports_of_.assign(system_.atoms.size(), {});
   for (Index i = 0; i < layout_.internal_ports.size(); ++i) {
     internal_ports_of_[layout_.internal_ports[i].first].push_back(i);

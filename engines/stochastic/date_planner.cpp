@@ -56,42 +56,80 @@ bool has_stochastic_ports(const bipc::ir::System& system) {
 
 DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributions& custom,
                          RandomStream& random, TimeValue unbounded_mean)
-    : system_(system), random_(random), unbounded_mean_(unbounded_mean), custom_(custom) {}
+    : system_(system), random_(random), unbounded_mean_(unbounded_mean), custom_(custom) {
+  for (const bipc::ir::AtomInstance& atom : system.atoms) {
+    first_port_.push_back(stochastic_ports_.size());
+    for (const bipc::ir::Port& port : system.atom_types[atom.type].ports) {
+      stochastic_ports_.push_back(port.stochastic ? 1 : 0);
+    }
+  }
+}
 
-std::size_t DatePlanner::KeyHash::operator()(std::span<const std::uint32_t> key) const {
+std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, Index>> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (std::uint32_t x : key) h = (h ^ x) * 0xff51afd7ed558ccdull;
+  for (const auto& [first, second] : key) {
+    h = (h ^ first) * 0xff51afd7ed558ccdull;
+    h = (h ^ second) * 0xff51afd7ed558ccdull;
+  }
   return static_cast<std::size_t>(h ^ (h >> 32));
 }
 
 void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
+  const InteractionValue& value = runtime.values()[item.value];
   key_.clear();
-  ports_.clear();
-  key_.push_back(static_cast<std::uint32_t>(item.kind));
-  if (item.kind == Item::Kind::Interaction) {
-    const InteractionValue& value = runtime.values()[item.value];
-    key_.push_back(value.connector);
-    key_.push_back(value.defined);
-  }
-  runtime.append_atom_ports(item, ports_);
-  for (const auto& [atom, port] : ports_) {
-    key_.push_back(atom);
-    key_.push_back(port);
+  key_.emplace_back(value.connector, value.defined);
+  runtime.append_atom_ports(item, key_);
+}
+
+void DatePlanner::index_connectors(const Runtime& runtime) {
+  port_plans_.resize(stochastic_ports_.size());
+  connector_plans_.resize(system_.connectors.size());
+  connector_stochastic_.resize(system_.connectors.size());
+  for (Index k = 0; k < system_.connectors.size(); ++k) {
+    // Each port binding exactly one atom port: the interaction decides the atom ports.
+    bool atom_per_port = true;
+    for (const auto& refs : system_.connectors[k].bound) {
+      atom_per_port =
+          atom_per_port && refs.size() == 1 && refs.front().kind == bipc::ir::PortRef::Kind::Atom;
+    }
+    const std::vector<DefinedInteraction>& defined = runtime.layout().defined[k];
+    if (!atom_per_port || defined.size() > kDirectPlans) continue;
+    for (const DefinedInteraction& interaction : defined) {
+      connector_plans_[k].push_back({});
+      connector_stochastic_[k].push_back(stochastic_port_of(k, interaction.ports));
+    }
   }
 }
 
-DatePlanner::Planned& DatePlanner::plan_of() {
-  auto found = plans_.find(std::span<const std::uint32_t>(key_));
+std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port_of(Index k,
+                                                                       PortSet ports) const {
+  const auto& bound = system_.connectors[k].bound;
+  for (std::size_t i = 0; i < bound.size(); ++i) {
+    const bipc::ir::PortRef& ref = bound[i].front();
+    if ((ports & (PortSet{1} << i)) && stochastic_ports_[first_port_[ref.instance] + ref.port]) {
+      return std::pair{ref.instance, ref.port};
+    }
+  }
+  return std::nullopt;
+}
+
+DatePlanner::Planned& DatePlanner::plan_of(const Runtime& runtime, const Item& item) {
+  if (item.kind != Item::Kind::Interaction) return port_plans_[first_port_[item.atom] + item.port];
+  const InteractionValue& value = runtime.values()[item.value];
+  std::vector<Planned>& direct = connector_plans_[value.connector];
+  if (value.defined < direct.size()) return direct[value.defined];
+  key_of(runtime, item);
+  auto found = plans_.find(std::span<const std::pair<Index, Index>>(key_));
   if (found == plans_.end()) found = plans_.emplace(key_, Planned{}).first;
   return found->second;
 }
 
 bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::string& error) {
+  if (connector_plans_.empty()) index_connectors(runtime);
   dates.clear();
   ++generation_;
   for (const Item& item : runtime.items()) {
-    key_of(runtime, item);
-    Planned& planned = plan_of();
+    Planned& planned = plan_of(runtime, item);
     const bool kept = planned.seen + 1 == generation_ && same(planned.offered, item.offered);
     if (!kept) {
       if (!draw(runtime, item, planned.date, error)) return false;
@@ -111,18 +149,28 @@ bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std:
   // The item's own window from now: the dates other items' deadlines cut off stay possible, as
   // the race decides whether the item gets there.
   const Interval window = item.offered.interval.intersect(Interval::from(runtime.state().now));
-  if (const auto stochastic = stochastic_port()) {
+  if (const auto stochastic = stochastic_port(runtime, item)) {
     return draw_stochastic(runtime, stochastic->first, stochastic->second, window, date, error);
   }
   date = draw_timed(item.offered.urgency, window);
   return true;
 }
 
-std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
+std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port(const Runtime& runtime,
+                                                                    const Item& item) {
+  if (item.kind != Item::Kind::Interaction) {
+    if (stochastic_ports_[first_port_[item.atom] + item.port])
+      return std::pair{item.atom, item.port};
+    return std::nullopt;
+  }
+  const InteractionValue& value = runtime.values()[item.value];
+  if (value.defined < connector_plans_[value.connector].size()) {
+    return connector_stochastic_[value.connector][value.defined];
+  }
+  ports_.clear();
+  runtime.append_atom_ports(item, ports_);
   for (const auto& [atom, port] : ports_) {
-    if (system_.atom_types[system_.atoms[atom].type].ports[port].stochastic) {
-      return std::pair{atom, port};
-    }
+    if (stochastic_ports_[first_port_[atom] + port]) return std::pair{atom, port};
   }
   return std::nullopt;
 }
@@ -130,10 +178,9 @@ std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port() const {
 void DatePlanner::replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates) {
   const std::vector<Item>& items = runtime.items();
   for (std::size_t i = 0; i < items.size(); ++i) {
-    key_of(runtime, items[i]);
-    if (stochastic_port()) continue;
+    if (stochastic_port(runtime, items[i])) continue;
     dates[i] = draw_timed(items[i].constraint.urgency, items[i].constraint.interval);
-    plan_of().date = dates[i];
+    plan_of(runtime, items[i]).date = dates[i];
   }
 }
 
@@ -149,26 +196,28 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
                                   TimeValue& date, std::string& error) {
   const auto& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Stochastic& annotation = *type.ports[port].stochastic;
-  const std::vector<double> params = runtime.stochastic_params(atom, port);
+  runtime.stochastic_params(atom, port, params_);
   const EmpiricalCdf* custom = nullptr;
   if (annotation.distribution == bipc::ir::Distribution::Custom) {
     custom = &custom_.at(annotation.custom_file);
   }
-  const std::string where = runtime.layout().atom_names[atom] + "." + type.ports[port].name;
-  auto made = DateDistribution::make(annotation.distribution, params, custom);
+  // Only error messages name the port: no string is built for a successful draw.
+  auto where = [&] { return runtime.layout().atom_names[atom] + "." + type.ports[port].name; };
+  auto made = DateDistribution::make(annotation.distribution, params_, custom);
   if (auto* message = std::get_if<std::string>(&made)) {
-    error = "@stochastic distribution of " + where + ": " + *message;
+    error = "@stochastic distribution of " + where() + ": " + *message;
     return false;
   }
   const DateDistribution& distribution = std::get<DateDistribution>(made);
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
+  const double below = distribution.cdf(lower);
   double sample = 0.0;
-  if (distribution.cdf(lower) > 0.0) {
-    const std::optional<double> above = distribution.sample_above(lower, random_);
+  if (below > 0.0) {
+    const std::optional<double> above = distribution.sample_above(lower, below, random_);
     if (!above) {
-      error = "missed support: " + where + " draws from " + distribution.describe() +
+      error = "missed support: " + where() + " draws from " + distribution.describe() +
               " but its clock " + type.clocks[annotation.clock].name + " is already at " +
               std::to_string(lower) + ", beyond every date of the distribution";
       return false;

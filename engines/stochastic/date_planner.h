@@ -51,7 +51,9 @@ class DatePlanner {
   void replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates);
 
  private:
-  using Key = std::vector<std::uint32_t>;
+  /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
+  /// pairs it fires.
+  using Key = std::vector<std::pair<Index, Index>>;
   struct Planned {
     Constraint offered;
     TimeValue date = 0;
@@ -60,37 +62,55 @@ class DatePlanner {
   // Transparent: items are looked up by a span over a reused buffer, without allocating.
   struct KeyHash {
     using is_transparent = void;
-    std::size_t operator()(std::span<const std::uint32_t> key) const;
+    std::size_t operator()(std::span<const std::pair<Index, Index>> key) const;
   };
   struct KeyEqual {
     using is_transparent = void;
-    bool operator()(std::span<const std::uint32_t> a, std::span<const std::uint32_t> b) const {
+    bool operator()(std::span<const std::pair<Index, Index>> a,
+                    std::span<const std::pair<Index, Index>> b) const {
       return std::equal(a.begin(), a.end(), b.begin(), b.end());
     }
   };
   using Plans = std::unordered_map<Key, Planned, KeyHash, KeyEqual>;
 
-  /// Identifies an item across steps: its connector (or atom port) and the atom ports it fires;
-  /// written to key_, the item's atom ports to ports_.
+  /// Identifies an interaction item across steps: its connector and defined interaction and the
+  /// atom ports it fires; written to key_.
   void key_of(const Runtime& runtime, const Item& item);
-  /// The plan of the item whose key is in key_ (created empty when new).
-  Planned& plan_of();
+  /// Sizes the tables of plans kept without a key (port_plans_, connector_plans_).
+  void index_connectors(const Runtime& runtime);
+  /// The plan of the item (created empty when new).
+  Planned& plan_of(const Runtime& runtime, const Item& item);
   bool draw(Runtime& runtime, const Item& item, TimeValue& date, std::string& error);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
-  /// The @stochastic port among ports_ (at most one per interaction), if any.
-  std::optional<std::pair<Index, Index>> stochastic_port() const;
+  /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
+  /// bind one atom port), if any.
+  std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;
+  /// The @stochastic port among the atom ports the item fires (at most one), if any.
+  std::optional<std::pair<Index, Index>> stochastic_port(const Runtime& runtime, const Item& item);
 
   const bipc::ir::System& system_;
   RandomStream& random_;
   TimeValue unbounded_mean_;
   const CustomDistributions& custom_;
+  // Plans by item. An atom port's item, and an interaction of a connector whose ports each
+  // bind one atom port (with few defined interactions), has a slot of its own: its key is
+  // implied. Other interactions are found by key.
+  static constexpr std::size_t kDirectPlans = 64;
+  std::vector<Planned> port_plans_;                    // per flattened atom port
+  std::vector<std::vector<Planned>> connector_plans_;  // per connector, per defined interaction
+  // Likewise, the @stochastic atom port of each such interaction.
+  std::vector<std::vector<std::optional<std::pair<Index, Index>>>> connector_stochastic_;
   Plans plans_;
   std::uint64_t generation_ =
       1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
   Key key_;
-  std::vector<std::pair<Index, Index>> ports_;
+  std::vector<std::pair<Index, Index>> ports_;  // the atom ports of the item being drawn
+  std::vector<double> params_;                  // of the @stochastic annotation being drawn from
+  // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
+  std::vector<std::size_t> first_port_;
+  std::vector<std::uint8_t> stochastic_ports_;
 };
 
 }  // namespace smcbip::engines

@@ -333,8 +333,8 @@ double DateDistribution::sample(RandomStream& random) const {
   return quantile_of(u, 1.0 - u);
 }
 
-std::optional<double> DateDistribution::sample_above(double lower, RandomStream& random) const {
-  const double below = cdf(lower);
+std::optional<double> DateDistribution::sample_above(double lower, double below,
+                                                     RandomStream& random) const {
   const double above = survival(lower);
   if (!(above >= kMinTailMass)) return std::nullopt;
   const double u = random.uniform01_open();

@@ -115,7 +115,11 @@ class DateDistribution {
   /// remaining tail mass when that is the smaller side, so truncations far in the upper tail stay
   /// accurate. Always > lower. nullopt when P(X > lower) < kMinTailMass: the date cannot lie
   /// beyond `lower` (a missed support, which the caller reports as a model error).
-  std::optional<double> sample_above(double lower, RandomStream& random) const;
+  std::optional<double> sample_above(double lower, RandomStream& random) const {
+    return sample_above(lower, cdf(lower), random);
+  }
+  /// As above, for a caller that already knows `mass_below` = cdf(lower).
+  std::optional<double> sample_above(double lower, double mass_below, RandomStream& random) const;
 
   /// The distribution as written in a model, e.g. "normal(10, 2)"; for error messages.
   std::string describe() const;

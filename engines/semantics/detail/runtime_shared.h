@@ -1,0 +1,117 @@
+// What the files of Runtime share: interval helpers of the semantics and the frames of
+// connector code. Internal to engines/semantics.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+namespace detail {
+
+using bipc::Urgency;
+
+inline Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
+
+/// a = a.intersect(b), field by field (see compute_items). Inlined so that `a` stays in
+/// registers: through memory, each call stalled on store forwarding.
+[[gnu::always_inline]] inline void narrow(Interval& a, const Interval& b) {
+  if (b.left > a.left || (b.left == a.left && b.left_open)) {
+    a.left = b.left;
+    a.left_open = b.left_open;
+  }
+  if (b.right < a.right || (b.right == a.right && b.right_open)) {
+    a.right = b.right;
+    a.right_open = b.right_open;
+  }
+}
+
+/// The urgent part of a constraint: lazy none, delayable its closed right end, eager all of it.
+inline Interval urgent_part(const Constraint& c) {
+  switch (c.urgency) {
+    case Urgency::Lazy:
+      return Interval::none();
+    case Urgency::Delayable:
+      if (c.interval.right == kPlusInfinity || c.interval.right_open || c.interval.empty()) {
+        return Interval::none();
+      }
+      return Interval::point(c.interval.right);
+    case Urgency::Eager:
+      return c.interval;
+  }
+  return Interval::none();
+}
+
+/// How long time may pass from `now` without missing the constraint's urgency.
+inline Interval wait(const Constraint& c, TimeValue now) {
+  const Interval urgent = urgent_part(c);
+  if (urgent.empty()) return Interval::from(now);
+  if (urgent.contains(now)) return Interval::point(now);
+  // An open left end still bounds the wait at that end (the reference engine's Interval::wait),
+  // which makes `x > 5` eager a time-lock at 5.
+  if (now <= urgent.left) return {now, urgent.left, false, false};
+  return Interval::from(now);
+}
+
+/// What connector code runs over: the runtime and one interaction value.
+struct PortContext {
+  Runtime* runtime;
+  const InteractionValue* value;
+};
+
+inline bool subset(PortSet a, PortSet b) { return (a & ~b) == 0; }
+
+inline Constraint intersect(const Constraint& a, const Constraint& b) {
+  return {a.interval.intersect(b.interval), stronger(a.urgency, b.urgency)};
+}
+
+/// The value chosen for a port parameter taking part in an interaction value.
+inline const PortValue& chosen(const InteractionValue& v, Index port) {
+  if (port < kPortSetBits && v.ports != 0) {
+    const PortSet below = v.ports & ((PortSet{1} << port) - 1);
+    return v.choice[static_cast<std::size_t>(std::popcount(below))];
+  }
+  // Wider connectors: the choice is in port order.
+  return *std::lower_bound(v.choice.begin(), v.choice.end(), port,
+                           [](const PortValue& pv, Index p) { return pv.param < p; });
+}
+
+}  // namespace detail
+
+/// Where connector code finds its port parameters and other atoms' data (Frame callbacks).
+struct RuntimeDetail {
+  static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
+    const auto& c = *static_cast<const detail::PortContext*>(context);
+    const PortValue& pv = detail::chosen(*c.value, port);
+    Runtime& r = *c.runtime;
+    if (pv.from_atom) {
+      const std::size_t first = r.port_data_begin_[r.port_offset_[pv.atom] + pv.port];
+      return &r.state_.data[r.port_data_slots_[first + arg]];
+    }
+    InteractionValue& sub = r.values_[pv.sub];
+    const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
+    return &sub.data[type.export_data[arg]];
+  }
+  static Val* instance_slot(const void* context, Index atom, std::uint16_t slot) {
+    Runtime& r = *const_cast<Runtime*>(static_cast<const Runtime*>(context));
+    return &r.state_.data[r.layout_.atom_data[atom] + slot];
+  }
+};
+
+namespace detail {
+
+/// The frame of connector code (guard, up, down) over one interaction value.
+inline Frame connector_frame(InteractionValue& value, const PortContext& context, TimeValue now) {
+  Frame f;
+  f.connector_data = value.data.data();
+  f.port_slot = &RuntimeDetail::port_slot;
+  f.port_context = &context;
+  f.now = now;
+  return f;
+}
+
+}  // namespace detail
+
+}  // namespace smcbip::engines

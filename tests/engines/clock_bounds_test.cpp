@@ -1,0 +1,136 @@
+// ClockBounds finds the same dates as the interpreter's holds_when, and only for its form.
+#include "engines/interpreter/clock_bounds.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <vector>
+
+namespace smcbip::engines {
+namespace {
+
+using bipc::ir::Code;
+using bipc::ir::Instr;
+using bipc::ir::Op;
+using bipc::ir::Scope;
+
+Instr clock(bipc::ir::Index index) {
+  Instr in;
+  in.op = Op::Load;
+  in.scope = Scope::Clock;
+  in.kind = ValueKind::Float;
+  in.index = index;
+  return in;
+}
+
+Instr push_float(double value) {
+  Instr in;
+  in.op = Op::PushFloat;
+  in.kind = ValueKind::Float;
+  in.imm.f = value;
+  return in;
+}
+
+Instr push_int(std::int64_t value) {
+  Instr in;
+  in.op = Op::PushInt;
+  in.kind = ValueKind::Int;
+  in.imm.i = value;
+  return in;
+}
+
+Instr op(Op code, ValueKind kind = ValueKind::Float) {
+  Instr in;
+  in.op = code;
+  in.kind = kind;
+  return in;
+}
+
+Instr data(bipc::ir::Index slot) {
+  Instr in;
+  in.op = Op::Load;
+  in.scope = Scope::AtomData;
+  in.kind = ValueKind::Float;
+  in.index = slot;
+  return in;
+}
+
+/// `a && b`, as the compiler lays it out: the jump lands after b.
+Code conjunction(const Code& a, const Code& b) {
+  Code out = a;
+  Instr jump = op(Op::JumpIfFalseKeep, ValueKind::Bool);
+  jump.index = static_cast<bipc::ir::Index>(a.instrs.size() + 1 + b.instrs.size());
+  out.instrs.push_back(jump);
+  out.instrs.insert(out.instrs.end(), b.instrs.begin(), b.instrs.end());
+  return out;
+}
+
+class ClockBoundsTest : public ::testing::Test {
+ protected:
+  /// The interpreter's and the bounds' dates agree over many clock states and dates.
+  void expect_same_dates(const Code& code) {
+    const std::optional<ClockBounds> bounds = ClockBounds::of(code);
+    ASSERT_TRUE(bounds);
+    std::mt19937_64 random(7);
+    std::uniform_int_distribution<TimeValue> date(0, 50'000'000);
+    std::uniform_real_distribution<double> value(0.0, 20.0);
+    const double rates[] = {1.0, 2.0, 0.5, 0.0, -1.0, 1.0 / 3.0};
+    for (int i = 0; i < 2000; ++i) {
+      clocks_[0] = {value(random), date(random), rates[i % 6]};
+      clocks_[1] = {value(random), date(random), rates[(i / 6) % 6]};
+      Frame frame;
+      frame.atom_data = data_;
+      frame.clocks = clocks_;
+      frame.clock_units = units_;
+      frame.now = date(random);
+      ASSERT_EQ(bounds->holds_when(frame), eval_.holds_when(code, frame)) << "state " << i;
+    }
+  }
+
+  bipc::ir::System system_;
+  BoundFunctions functions_;
+  std::ostringstream out_;
+  StringPool strings_;
+  CallContext call_{out_, strings_};
+  CodeEvaluator eval_{system_, functions_, call_};
+  Val data_[1] = {make_float(4.0)};
+  ClockState clocks_[2];
+  TimeValue units_[2] = {1'000'000, 1'000};  // milliseconds, microseconds
+};
+
+TEST_F(ClockBoundsTest, OneComparisonEitherWay) {
+  for (Op cmp : {Op::Lt, Op::Le, Op::Gt, Op::Ge, Op::Eq}) {
+    expect_same_dates({{clock(0), push_float(3.0), op(cmp)}});
+    expect_same_dates({{push_float(2.5), clock(1), op(cmp)}});
+    expect_same_dates({{clock(1), push_int(7), op(Op::IntToFloat), op(cmp)}});
+  }
+}
+
+TEST_F(ClockBoundsTest, ChainsOfConjunctions) {
+  const Code low{{clock(0), push_float(1.0), op(Op::Ge)}};
+  const Code high{{clock(0), push_float(5.0), op(Op::Le)}};
+  const Code other{{push_float(12.0), clock(1), op(Op::Gt)}};
+  expect_same_dates(conjunction(low, high));
+  expect_same_dates(conjunction(conjunction(low, high), other));
+  expect_same_dates(conjunction(conjunction(other, high), low));
+}
+
+TEST_F(ClockBoundsTest, OtherFormsAreLeftToTheInterpreter) {
+  const Code low{{clock(0), push_float(1.0), op(Op::Ge)}};
+  const Code by_data{{clock(0), data(0), op(Op::Le)}};
+  EXPECT_FALSE(ClockBounds::of(Code{}));
+  EXPECT_FALSE(ClockBounds::of(by_data));
+  EXPECT_FALSE(ClockBounds::of(conjunction(low, by_data)));
+  Code disjunction = conjunction(low, low);
+  disjunction.instrs[3].op = Op::JumpIfTrueKeep;
+  EXPECT_FALSE(ClockBounds::of(disjunction));
+  // `a && (b && c)`: both jumps land at the end.
+  Code right_nested = conjunction(low, conjunction(low, low));
+  EXPECT_FALSE(ClockBounds::of(right_nested));
+  EXPECT_FALSE(ClockBounds::of({{clock(0), clock(1), op(Op::Le)}}));
+}
+
+}  // namespace
+}  // namespace smcbip::engines
