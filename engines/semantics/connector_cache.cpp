@@ -139,6 +139,7 @@ const std::vector<Index>& ConnectorCache::work(Index compound) {
   if (!system_.compounds[compound].priorities.empty())
     return system_.compounds[compound].connectors;
   std::vector<Index>& connectors = work_[compound];
+  if (connectors.size() < 2) return connectors;
   std::sort(connectors.begin(), connectors.end(),
             [&](Index a, Index b) { return rank_[a] < rank_[b]; });
   return connectors;

@@ -89,7 +89,7 @@ bool Runtime::fail(int code, std::string message) {
   return false;
 }
 
-Frame Runtime::atom_frame(AtomScratch s, Index atom) {
+Frame Runtime::atom_frame(const AtomScratch& s, Index atom) {
   Frame f = atom_frame(atom);
   if (s.atom_data != nullptr) f.atom_data = s.atom_data;
   return f;
@@ -161,7 +161,7 @@ bool Runtime::initialize() {
   return check_compound_priority_cycles();
 }
 
-bool Runtime::check_invariants(AtomScratch s, Index atom) {
+bool Runtime::check_invariants(const AtomScratch& s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   atom_invariant_[atom] = Interval::all();
@@ -198,7 +198,7 @@ bool Runtime::check_invariants(AtomScratch s, Index atom) {
   return true;
 }
 
-bool Runtime::fire_transition(AtomScratch s, Index atom, Index transition, Index label,
+bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition, Index label,
                               const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Transition& t = type.transitions[transition];
@@ -237,7 +237,7 @@ inline bool Runtime::from_marked(const TransitionEntry& entry,
   return true;
 }
 
-bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
+bool Runtime::run_internal_transitions(const AtomScratch& s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   const std::vector<TransitionEntry>& internal =
@@ -261,7 +261,7 @@ bool Runtime::run_internal_transitions(AtomScratch s, Index atom) {
   }
 }
 
-bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
+bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t base = layout_.atom_places[atom];
   std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
@@ -272,7 +272,11 @@ bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
     const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
     if (!from_marked(entry, tr, base)) continue;
-    const Interval when = tr.guard.empty() ? Interval::all() : s.eval.holds_when(tr.guard, f);
+    // Built in place (no copy of a returned Interval, which stalled on store forwarding).
+    const Interval when = [&] {
+      if (tr.guard.empty()) return Interval::all();
+      return s.eval.holds_when(tr.guard, f);
+    }();
     if (when.empty()) continue;
     if (values[tr.port]) {
       if (type.ports[tr.port].is_extern) {
@@ -340,7 +344,7 @@ bool Runtime::update_atom(AtomScratch s, Index atom, const Frame& f) {
   return true;
 }
 
-bool Runtime::check_atom_priority_cycle(AtomScratch s, Index atom) {
+bool Runtime::check_atom_priority_cycle(const AtomScratch& s, Index atom) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
   const std::size_t rules = type.priorities.size();
   const std::size_t n = type.ports.size();
@@ -508,7 +512,7 @@ bool Runtime::execute_value(Index index) {
   return true;
 }
 
-bool Runtime::fire_port(AtomScratch s, Index atom, Index port) {
+bool Runtime::fire_port(const AtomScratch& s, Index atom, Index port) {
   const auto& v = port_values_[port_offset_[atom] + port];
   if (!v) return true;
   // One frame serves the whole firing: the date and the state's buffers stay put.

@@ -199,7 +199,7 @@ class Runtime {
     Val* atom_data = nullptr;
     /// Firing on a worker thread: the scheduler's shared bookkeeping is left to the caller.
     bool on_worker = false;
-    bool fail(int code, std::string message) {
+    bool fail(int code, std::string message) const {
       error = {code, std::move(message)};
       return false;
     }
@@ -219,25 +219,26 @@ class Runtime {
     PortSet ports = 0;
     int code = -1;  // InteractionValue::code
   };
-  AtomScratch main_scratch() { return {eval_, error_, nullptr}; }
+  // Passed by reference: a copy made on the stack per call stalled on store forwarding.
+  const AtomScratch& main_scratch() const { return main_scratch_; }
   Frame atom_frame(Index atom);
-  Frame atom_frame(AtomScratch s, Index atom);
+  Frame atom_frame(const AtomScratch& s, Index atom);
   bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
   /// `f`: the atom's frame (atom_frame).
-  bool update_atom(AtomScratch s, Index atom, const Frame& f);
+  bool update_atom(const AtomScratch& s, Index atom, const Frame& f);
   bool run_internal_transitions(Index atom) {
     return run_internal_transitions(main_scratch(), atom);
   }
-  bool run_internal_transitions(AtomScratch s, Index atom);
-  bool fire_transition(AtomScratch s, Index atom, Index transition, Index port_label,
+  bool run_internal_transitions(const AtomScratch& s, Index atom);
+  bool fire_transition(const AtomScratch& s, Index atom, Index transition, Index port_label,
                        const Frame& f);
   /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
   [[gnu::always_inline]] inline bool from_marked(const TransitionEntry& entry,
                                                  const bipc::ir::Transition& transition,
                                                  std::size_t base) const;
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
-  bool check_invariants(AtomScratch s, Index atom);
-  bool check_atom_priority_cycle(AtomScratch s, Index atom);
+  bool check_invariants(const AtomScratch& s, Index atom);
+  bool check_atom_priority_cycle(const AtomScratch& s, Index atom);
   bool check_compound_priority_cycles();
   void compute_connector(Index connector);
   /// Fills required_offers_ and has_sub_connectors_.
@@ -326,7 +327,7 @@ class Runtime {
   /// (runtime_parallel.cpp).
   bool execute_value_in_parallel(Index value);
   bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
-  bool fire_port(AtomScratch s, Index atom, Index port);
+  bool fire_port(const AtomScratch& s, Index atom, Index port);
   bool fail(int code, std::string message);
   void append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const;
   bool open_extern_ports();
@@ -350,6 +351,7 @@ class Runtime {
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
+  const AtomScratch main_scratch_{eval_, error_, nullptr};
   // Per atom: where its slots are (atom_frame).
   struct AtomSlots {
     std::size_t data = 0;

@@ -51,7 +51,7 @@ void Runtime::index_single_atom_ports() {
   single_atom_ports_.resize(system_.connectors.size());
   for (Index k = 0; k < system_.connectors.size(); ++k) {
     const auto& bound = system_.connectors[k].bound;
-    bool single = !bound.empty() && layout_.enumerated[k];
+    bool single = !bound.empty() && layout_.enumerated[k] && !tries_largest(k);
     for (const auto& refs : bound) {
       single = single && refs.size() == 1 && refs.front().kind == bipc::ir::PortRef::Kind::Atom;
     }
@@ -76,7 +76,7 @@ void Runtime::compute_sub_connectors(Index k) {
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   release_values(k);
-  if (!single_atom_ports_[k].empty() && !tries_largest(k)) {
+  if (!single_atom_ports_[k].empty()) {
     compute_single_offer_interactions(k);
     return;
   }
@@ -265,8 +265,17 @@ void Runtime::compute_single_offer_interactions(Index k) {
     for (PortSet left = value.ports; left != 0; left &= left - 1) {
       const auto param = static_cast<Index>(std::countr_zero(left));
       const SingleAtomPort& port = ports[param];
-      add_choice(value,
-                 {true, port.atom, port.port, kNone, port_values_[port.offer]->constraint, param});
+      // Written field by field into the choice: a PortValue built on the stack and copied
+      // stalled on store forwarding.
+      PortValue& offer = value.choice.emplace_back();
+      offer.atom = port.atom;
+      offer.port = port.port;
+      offer.param = param;
+      const Constraint& offered = port_values_[port.offer]->constraint;
+      offer.constraint = offered;
+      // Read from the offer, not from its copy just written.
+      narrow(value.raw.interval, offered.interval);
+      value.raw.urgency = stronger(value.raw.urgency, offered.urgency);
     }
     keep_value_if_allowed(k, slot);
   }
