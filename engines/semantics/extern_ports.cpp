@@ -62,7 +62,7 @@ void Runtime::refresh_extern_events() {
   }
 }
 
-std::optional<TimeValue> Runtime::next_unexpected_arrival() const {
+std::optional<TimeValue> Runtime::first_unexpected_arrival() const {
   std::optional<TimeValue> first;
   for (const ExternPortState& e : extern_ports_) {
     if (!e.unexpected) continue;

@@ -168,7 +168,11 @@ class Runtime {
   const bipc::ir::System& system() const { return system_; }
 
   /// The earliest date at which a pending extern event that its port cannot take arrives.
-  std::optional<TimeValue> next_unexpected_arrival() const;
+  std::optional<TimeValue> next_unexpected_arrival() const {
+    // Inline for models without extern ports: the optional then stays in registers.
+    if (extern_ports_.empty()) return std::nullopt;
+    return first_unexpected_arrival();
+  }
   /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
   /// 6, policy ignore drops them. False with error() set on error 6.
   bool receive_unexpected_events(TimeValue upto);
@@ -221,6 +225,7 @@ class Runtime {
   };
   // Passed by reference: a copy made on the stack per call stalled on store forwarding.
   const AtomScratch& main_scratch() const { return main_scratch_; }
+  std::optional<TimeValue> first_unexpected_arrival() const;
   Frame atom_frame(Index atom);
   Frame atom_frame(const AtomScratch& s, Index atom);
   bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
