@@ -71,9 +71,10 @@ std::string state_key(const RunState& state) {
   return key;
 }
 
-ExplorationCounts explore_states(Runtime& runtime) {
+ExplorationCounts explore_states(Runtime& runtime, std::optional<std::uint64_t> max_steps) {
   std::unordered_set<std::string> seen;
-  return breadth_first(runtime, std::numeric_limits<std::uint64_t>::max(), seen);
+  return breadth_first(runtime, max_steps.value_or(std::numeric_limits<std::uint64_t>::max()),
+                       seen);
 }
 
 std::unordered_set<std::string> reachable_state_keys(Runtime& runtime, std::uint64_t max_steps) {

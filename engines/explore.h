@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <unordered_set>
@@ -16,8 +17,10 @@ struct ExplorationCounts {
 
 /// Breadth-first search from the initialised state: every enabled item of every reachable state
 /// is executed once. A state is the marking and data of all atoms (time is ignored). Errors of
-/// executing an item are counted, not reported one by one.
-ExplorationCounts explore_states(Runtime& runtime);
+/// executing an item are counted, not reported one by one. With `max_steps`, only the states
+/// reachable in at most that many steps (an unbounded state space then ends).
+ExplorationCounts explore_states(Runtime& runtime,
+                                 std::optional<std::uint64_t> max_steps = std::nullopt);
 
 /// The part of a run state that identifies it in an exploration: markings, data and pending
 /// resumes, as raw bytes (time is ignored).

@@ -34,7 +34,9 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
                "do not restrict connectors to their maximal interactions");
   app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
   app.add_flag("-s,--silent", options.silent, "print no engine trace (errors still)");
-  app.add_flag("--explore", options.explore, "enumerate the reachable states (untimed)");
+  app.add_flag(
+      "--explore", options.explore,
+      "enumerate the reachable states (untimed); with --limit, those within that many steps");
   app.add_flag_callback(
       "--stochastic", [&options] { options.stochastic = true; },
       "race planned dates (the default when the model has @stochastic ports)");

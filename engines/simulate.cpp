@@ -156,7 +156,7 @@ class Simulation {
       line("initialize components...");
     }
     if (!runtime_.initialize() || !runtime_.resume_atoms(0)) return error();
-    const ExplorationCounts counts = explore_states(runtime_);
+    const ExplorationCounts counts = explore_states(runtime_, options_.limit);
     write_exploration(out_, counts);
     return {kRunOk, RunEnd::Deadlock, counts.states, {}};
   }

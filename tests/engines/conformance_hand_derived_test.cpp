@@ -61,6 +61,16 @@ TYPED_TEST(ConformanceHandDerived, S11_doublecounter_explore) {
                    [](const auto& run) { expect_exploration(run, 10201, 1, 0); });
 }
 
+// With --limit d, only the states within d steps: counters (i, j) with i + j <= d, that is
+// (d + 1)(d + 2) / 2 of them for d <= 100, none a deadlock.
+TYPED_TEST(ConformanceHandDerived, S11_doublecounter_explore_bounded_by_limit) {
+  auto options = this->options();
+  options.explore = true;
+  options.limit = 10;
+  this->check_runs("running/doublecounter", "CT()", options, 1,
+                   [](const auto& run) { expect_exploration(run, 66, 0, 0); });
+}
+
 TYPED_TEST(ConformanceHandDerived, S11_doublecounter2_random_run) {
   this->check_runs("running/doublecounter2", "CT()", this->options(),
                    [](const auto& run) { expect_internal_counting(run, 200); });
