@@ -16,14 +16,16 @@ using bipc::ir::Instr;
 using bipc::ir::Op;
 using bipc::ir::Scope;
 
-Instr clock(bipc::ir::Index index) {
+Instr load(Scope scope, bipc::ir::Index index) {
   Instr in;
   in.op = Op::Load;
-  in.scope = Scope::Clock;
+  in.scope = scope;
   in.kind = ValueKind::Float;
   in.index = index;
   return in;
 }
+
+Instr clock(bipc::ir::Index index) { return load(Scope::Clock, index); }
 
 Instr push_float(double value) {
   Instr in;
@@ -48,14 +50,7 @@ Instr op(Op code, ValueKind kind = ValueKind::Float) {
   return in;
 }
 
-Instr data(bipc::ir::Index slot) {
-  Instr in;
-  in.op = Op::Load;
-  in.scope = Scope::AtomData;
-  in.kind = ValueKind::Float;
-  in.index = slot;
-  return in;
-}
+Instr data(bipc::ir::Index slot) { return load(Scope::AtomData, slot); }
 
 /// `a && b`, as the compiler lays it out: the jump lands after b.
 Code conjunction(const Code& a, const Code& b) {
