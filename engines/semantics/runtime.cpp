@@ -546,6 +546,10 @@ bool Runtime::restore(const RunState& state) {
   state_ = state;
   for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
+    // The invariants' time bounds are those of the restored marking, not of the last state.
+    for (Index a = 0; a < system_.atoms.size(); ++a) {
+      if (!check_invariants(a)) return false;
+    }
     for (Index a = 0; a < system_.atoms.size(); ++a) {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
     }
