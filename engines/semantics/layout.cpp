@@ -300,6 +300,15 @@ std::string build_layout(const System& system, Layout& layout) {
       }
       layout.rules[c].push_back(rule);
     }
+    // Rules whose low side may name each connector: its own, and `*` ones of its compound.
+    for (Index r = 0; r < layout.rules[c].size(); ++r) {
+      const Index low = layout.rules[c][r].low_connector;
+      if (low != bipc::ir::kNone) {
+        layout.rules_by_low[low].push_back(r);
+        continue;
+      }
+      for (Index k : system.compounds[c].connectors) layout.rules_by_low[k].push_back(r);
+    }
   }
   return {};
 }

@@ -61,10 +61,11 @@ struct Layout {
   std::vector<PortSet> required_ports;
   std::vector<bool> top_level;           // per connector: not bound by a connector of its compound
   std::vector<Index> listed_connectors;  // connectors without export, in listing order
-  std::vector<std::pair<Index, Index>> internal_ports;   // (atom, port) in listing order
-  std::vector<std::pair<Index, Index>> extern_ports;     // (atom, port) in listing order
-  std::vector<std::vector<PriorityRule>> rules;          // per compound, in declaration order
-  std::vector<std::vector<Index>> rules_by_low;          // per connector: rules of its compound
+  std::vector<std::pair<Index, Index>> internal_ports;  // (atom, port) in listing order
+  std::vector<std::pair<Index, Index>> extern_ports;    // (atom, port) in listing order
+  std::vector<std::vector<PriorityRule>> rules;         // per compound, in declaration order
+  /// Per connector: the rules of its compound whose low side names it or is `*`, in order.
+  std::vector<std::vector<Index>> rules_by_low;
   std::vector<std::string> atom_names, connector_names;  // full names "ROOT.x"
   /// No atom has a clock and no port is extern: every guard, invariant and resume condition
   /// then holds at all dates or at none, so every enabled item's window is the waiting window.

@@ -2,6 +2,7 @@
 // maximal progress, applied to the connectors' interaction values.
 #include <algorithm>
 #include <functional>
+#include <set>
 
 #include "engines/semantics/detail/runtime_shared.h"
 
@@ -186,11 +187,13 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
   if (rules.empty()) return;
   // Rule closure: the dominators of every high side reached from this value through active
   // rules, whether or not the interactions in between are enabled.
-  std::vector<RuleNode> visited;
+  // Only the rules whose low side may name the node's connector: a chain of n rules costs n
+  // visits per value, not n^2.
+  std::set<RuleNode> visited;
   std::function<void(const RuleNode&)> dominate = [&](const RuleNode& low) {
-    if (std::find(visited.begin(), visited.end(), low) != visited.end()) return;
-    visited.push_back(low);
-    for (const PriorityRule& rule : rules) {
+    if (!visited.insert(low).second) return;
+    for (Index r : layout_.rules_by_low[low.first]) {
+      const PriorityRule& rule = rules[r];
       if (!applies_low(rule, low) || !rule_guard(rule)) continue;
       for (const RuleNode& high : high_side(rule)) {
         compute_connector(high.first);
