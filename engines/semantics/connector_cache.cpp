@@ -48,13 +48,13 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       in_work_(system.connectors.size(), 0),
       queued_(system.compounds.size(), 0),
       checked_(system.connectors.size(), 0),
-      touched_(system.atoms.size(), 0) {
+      touched_(system.atoms.size(), 0),
+      ruled_compounds_(layout.ruled_compounds) {
   time_dependent_.reset(system.connectors.size());
   urgent_.reset(system.connectors.size());
   for (Index c = 0; c < system.compounds.size(); ++c) {
     const std::vector<Index>& connectors = system.compounds[c].connectors;
     for (Index r = 0; r < connectors.size(); ++r) rank_[connectors[r]] = r;
-    if (!layout.rules[c].empty()) ruled_compounds_.push_back(c);
   }
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];

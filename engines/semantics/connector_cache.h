@@ -114,8 +114,7 @@ class ConnectorCache {
   std::vector<std::vector<bipc::ir::Index>> atom_connectors_;  // per atom: connectors binding it
   std::vector<std::vector<bipc::ir::Index>> parents_;  // per connector: connectors binding it
   std::vector<bipc::ir::Index> volatile_;              // connectors whose code is not cacheable
-  std::vector<std::uint8_t> ruled_;               // per connector: its compound has priority rules
-  std::vector<bipc::ir::Index> ruled_compounds_;  // compounds with priority rules
+  std::vector<std::uint8_t> ruled_;    // per connector: its compound has priority rules
   std::vector<bipc::ir::Index> rank_;  // per connector: its position in its compound's list
   IndexSet time_dependent_, urgent_;   // connectors
   std::vector<std::uint8_t> stale_, computed_;
@@ -131,6 +130,7 @@ class ConnectorCache {
   std::uint32_t generation_ = 0;
   std::vector<std::uint8_t> touched_;
   std::vector<bipc::ir::Index> touched_list_;
+  const std::vector<bipc::ir::Index>& ruled_compounds_;  // Layout::ruled_compounds
   bool all_stale_ = true;
   bool time_passed_ = true;
   TimeValue last_now_ = 0;

@@ -2,6 +2,7 @@
 #include "engines/semantics/layout.h"
 
 #include <algorithm>
+#include <bit>
 #include <functional>
 
 #include "engines/semantics/maximal_interaction.h"
@@ -180,17 +181,13 @@ bool side_ports(const System& system, const bipc::ir::PatternSide& side, PortSet
 std::vector<DefinedInteraction> with_code(const bipc::ir::ConnectorType& type,
                                           const std::vector<PortSet>& sets) {
   std::vector<DefinedInteraction> defined;
+  std::vector<Index> members;
   for (PortSet ports : sets) {
-    DefinedInteraction d{ports, -1};
-    for (std::size_t i = 0; i < type.interactions.size(); ++i) {
-      PortSet on = 0;
-      for (Index p : type.interactions[i].ports) on |= PortSet{1} << p;
-      if (on == ports) {
-        d.code = static_cast<int>(i);
-        break;
-      }
+    members.clear();
+    for (PortSet left = ports; left != 0; left &= left - 1) {
+      members.push_back(static_cast<Index>(std::countr_zero(left)));
     }
-    defined.push_back(d);
+    defined.push_back({ports, interaction_code(type, members)});
   }
   return defined;
 }
@@ -204,6 +201,14 @@ PortSet required_ports(const std::vector<DefinedInteraction>& defined) {
 }
 
 }  // namespace
+
+int interaction_code(const bipc::ir::ConnectorType& type, std::span<const Index> ports) {
+  for (std::size_t i = 0; i < type.interactions.size(); ++i) {
+    const std::vector<Index>& on = type.interactions[i].ports;  // sorted (lowering)
+    if (std::equal(on.begin(), on.end(), ports.begin(), ports.end())) return static_cast<int>(i);
+  }
+  return -1;
+}
 
 std::optional<std::vector<PortSet>> defined_interactions(const std::vector<DefineNode>& define,
                                                          std::size_t limit) {
@@ -300,6 +305,7 @@ std::string build_layout(const System& system, Layout& layout) {
       }
       layout.rules[c].push_back(rule);
     }
+    if (!layout.rules[c].empty()) layout.ruled_compounds.push_back(c);
     // Rules whose low side may name each connector: its own, and `*` ones of its compound.
     for (Index r = 0; r < layout.rules[c].size(); ++r) {
       const Index low = layout.rules[c][r].low_connector;

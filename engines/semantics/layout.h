@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,7 @@ struct Layout {
   std::vector<std::vector<PriorityRule>> rules;         // per compound, in declaration order
   /// Per connector: the rules of its compound whose low side names it or is `*`, in order.
   std::vector<std::vector<Index>> rules_by_low;
+  std::vector<Index> ruled_compounds;  // the compounds with priority rules, increasing
   std::vector<std::string> atom_names, connector_names;  // full names "ROOT.x"
   /// No atom has a clock and no port is extern: every guard, invariant and resume condition
   /// then holds at all dates or at none, so every enabled item's window is the waiting window.
@@ -75,6 +77,10 @@ struct Layout {
 /// Builds the layout; an error message names what the engines cannot run (e.g. a connector
 /// with more than 64 ports and a guard).
 std::string build_layout(const bipc::ir::System& system, Layout& layout);
+
+/// The index of the `on` clause (InteractionCode) of exactly the port parameters `ports`
+/// (increasing), or -1 when the type has none for them.
+int interaction_code(const bipc::ir::ConnectorType& type, std::span<const Index> ports);
 
 /// The interactions a define expression allows, in the reference engine's order: the tree's
 /// presence variables are enumerated depth first, 1 before 0.

@@ -62,9 +62,6 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
   bounding_atoms_.reset(system_.atoms.size());
   resuming_atoms_.reset(system_.atoms.size());
-  for (Index c = 0; c < layout.rules.size(); ++c) {
-    if (!layout.rules[c].empty()) compounds_with_rules_.push_back(c);
-  }
   index_listing();
   index_single_atom_ports();
   index_required_offers();

@@ -382,7 +382,6 @@ class Runtime {
   // of the last compute_items; per atom, its internal ports.
   IndexSet urgent_internal_ports_;
   std::vector<std::vector<Index>> internal_ports_of_;
-  std::vector<Index> compounds_with_rules_;  // the only ones priority cycles are searched in
   // Per connector: enabled interaction values (indices into values_), computed bottom up. The
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.

@@ -9,10 +9,9 @@
 namespace smcbip::engines {
 
 using bipc::ir::kNone;
+using detail::add_offer_constraint;
 using detail::connector_frame;
-using detail::narrow;
 using detail::PortContext;
-using detail::stronger;
 
 void Runtime::index_required_offers() {
   required_offers_.resize(system_.connectors.size());
@@ -175,12 +174,7 @@ bool Runtime::add_largest_values(Index k, ConnectorScratch& scratch) {
     if (n <= kPortSetBits) shape.ports |= PortSet{1} << i;
     scratch.pick.push_back(first[i]);
   }
-  for (std::size_t c = 0; c < type.interactions.size() && shape.code < 0; ++c) {
-    if (std::equal(type.interactions[c].ports.begin(), type.interactions[c].ports.end(),
-                   scratch.members.begin(), scratch.members.end())) {
-      shape.code = static_cast<int>(c);
-    }
-  }
+  shape.code = interaction_code(type, scratch.members);
   add_combinations(shape, scratch);
   return true;
 }
@@ -244,8 +238,7 @@ inline Index Runtime::start_value(const ValueShape& shape) {
 
 inline void Runtime::add_choice(InteractionValue& value, const PortValue& offer) {
   value.choice.push_back(offer);
-  narrow(value.raw.interval, offer.constraint.interval);
-  value.raw.urgency = stronger(value.raw.urgency, offer.constraint.urgency);
+  add_offer_constraint(value.raw, offer.constraint);
 }
 
 void Runtime::compute_single_offer_interactions(Index k) {
@@ -273,9 +266,7 @@ void Runtime::compute_single_offer_interactions(Index k) {
       offer.param = param;
       const Constraint& offered = port_values_[port.offer]->constraint;
       offer.constraint = offered;
-      // Read from the offer, not from its copy just written.
-      narrow(value.raw.interval, offered.interval);
-      value.raw.urgency = stronger(value.raw.urgency, offered.urgency);
+      add_offer_constraint(value.raw, offered);  // the offer, not its copy just written
     }
     keep_value_if_allowed(k, slot);
   }

@@ -76,9 +76,9 @@ std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const
 }
 
 bool Runtime::check_compound_priority_cycles() {
-  if (compounds_with_rules_.empty()) return true;
+  if (layout_.ruled_compounds.empty()) return true;
   acyclic_rule_sets_.resize(layout_.rules.size());
-  for (const Index compound : compounds_with_rules_) {
+  for (const Index compound : layout_.ruled_compounds) {
     const std::vector<PriorityRule>& rules = layout_.rules[compound];
     std::vector<bool> active(rules.size());
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);

@@ -25,6 +25,7 @@
 
 #include "engines/engines.h"
 #include "tests/engines/temp_model.h"
+#include "tests/engines/trace_oracles.h"
 
 namespace smcbip::engines {
 namespace {
@@ -156,15 +157,7 @@ TEST_P(SharedWindowChoice, FirstEnabledWinnerUniformWithItsOwnDate) {
 }
 
 std::string engine_name(const ::testing::TestParamInfo<EngineKind>& info) {
-  switch (info.param) {
-    case EngineKind::Reference:
-      return "Reference";
-    case EngineKind::Optimised:
-      return "Optimised";
-    case EngineKind::Multithread:
-      return "Multithread";
-  }
-  return "Unknown";
+  return tests::engine_label(info.param);
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, SharedWindowChoice,

@@ -98,16 +98,24 @@ struct Multithread {
 };
 using AllEngines = ::testing::Types<Reference, Optimised, Multithread>;
 
+/// The engine's name in test instance names.
+inline std::string engine_label(engines::EngineKind engine) {
+  switch (engine) {
+    case engines::EngineKind::Reference:
+      return "Reference";
+    case engines::EngineKind::Optimised:
+      return "Optimised";
+    case engines::EngineKind::Multithread:
+      return "Multithread";
+  }
+  return "Unknown";
+}
+
 /// Names the typed instances after the engine (`Conformance/Reference.R03_clock_speed`).
 struct EngineNames {
   template <class Engine>
   static std::string GetName(int /*index*/) {
-    if constexpr (Engine::kind == engines::EngineKind::Reference)
-      return "Reference";
-    else if constexpr (Engine::kind == engines::EngineKind::Optimised)
-      return "Optimised";
-    else
-      return "Multithread";
+    return engine_label(Engine::kind);
   }
 };
 
