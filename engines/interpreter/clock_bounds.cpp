@@ -1,6 +1,8 @@
 // Clock bounds: recognition of the guard form and its dates, as holds_when computes them.
 #include "engines/interpreter/clock_bounds.h"
 
+#include <cmath>
+
 #include "engines/interpreter/detail/time_sets.h"
 
 namespace smcbip::engines {
@@ -54,6 +56,18 @@ std::optional<ClockBounds::Bound> ClockBounds::bound_at(const std::vector<Instr>
   bound.op = compare.op;
   // holds_when reads a plain operand by the comparison's kind (its as_double).
   bound.literal = compare.kind == ValueKind::Float ? literal->f : static_cast<double>(literal->i);
+  if (std::fabs(bound.literal) < 0x1p20 && bound.literal == std::floor(bound.literal)) {
+    bound.small_literal = static_cast<std::int64_t>(bound.literal);
+  }
+  bound.clock_op = bound.op;
+  if (!bound.clock_on_left) {
+    // `L op x` is `x op' L` with the comparison turned around.
+    bound.clock_op = bound.op == Op::Lt   ? Op::Gt
+                     : bound.op == Op::Le ? Op::Ge
+                     : bound.op == Op::Gt ? Op::Lt
+                     : bound.op == Op::Ge ? Op::Le
+                                          : bound.op;
+  }
   return bound;
 }
 
@@ -75,8 +89,54 @@ std::optional<ClockBounds> ClockBounds::of(const bipc::ir::Code& code) {
   }
 }
 
+inline bool ClockBounds::narrow_exactly(const Bound& bound, const ClockState& clock, TimeValue unit,
+                                        TimeValue now, Interval& dates) {
+  // A clock running at rate 1 from 0 since `since` reaches the literal L at the integer date
+  // r = since + L*unit: the bound holds from (or until) r. holds_when solves for the delay
+  // e = r - now in floating point, up to a rounding error below 4 * 2^-53 times the largest of
+  // |now - since|, |L*unit| and |e|; under 2^30 ns that is below 1e-6, which solve() rounds to
+  // e exactly (finding it "integral"), and then adds now back: the same dates.
+  constexpr TimeValue kExact = TimeValue{1} << 30;
+  if (!bound.small_literal || clock.rate != 1.0 || clock.value_at != 0.0) return false;
+  const TimeValue elapsed = now - clock.since;
+  const TimeValue reach = *bound.small_literal * unit;
+  if (elapsed < 0 || elapsed >= kExact || reach <= -kExact || reach >= kExact) return false;
+  const TimeValue r = clock.since + reach;
+  switch (bound.clock_op) {
+    case Op::Lt:
+      narrow(dates, {kMinusInfinity, r, false, true});
+      return true;
+    case Op::Le:
+      narrow(dates, {kMinusInfinity, r, false, false});
+      return true;
+    case Op::Gt:
+      narrow(dates, {r, kPlusInfinity, true, false});
+      return true;
+    case Op::Ge:
+      narrow(dates, {r, kPlusInfinity, false, false});
+      return true;
+    case Op::Eq:
+      narrow(dates, Interval::point(r));
+      return true;
+    default:
+      return false;
+  }
+}
+
 Interval ClockBounds::holds_when(const Frame& frame) const {
-  // holds_when joins the sides of `&&` by intersection, in this order.
+  // holds_when joins the sides of `&&` by intersection, in this order; so does narrow, and
+  // intersections commute with adding now to every date.
+  Interval dates = Interval::all();
+  for (const Bound& bound : bounds_) {
+    const ClockState& clock = frame.clocks[bound.clock];
+    if (!narrow_exactly(bound, clock, frame.clock_units[bound.clock], frame.now, dates)) {
+      return solved(frame);
+    }
+  }
+  return dates;
+}
+
+Interval ClockBounds::solved(const Frame& frame) const {
   Interval delays = Interval::all();
   for (const Bound& bound : bounds_) {
     const ClockState& clock = frame.clocks[bound.clock];

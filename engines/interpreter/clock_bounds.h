@@ -2,6 +2,7 @@
 // at which they hold are found without interpreting their code.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -29,7 +30,18 @@ class ClockBounds {
     bipc::ir::Op op = bipc::ir::Op::Ge;
     double literal = 0.0;  // as holds_when reads it for the comparison's kind
     bool clock_on_left = true;
+    /// The literal when it is a small integer (|literal| < 2^20), for narrow_exactly.
+    std::optional<std::int64_t> small_literal;
+    bipc::ir::Op clock_op = bipc::ir::Op::Ge;  // `clock clock_op literal`, whichever side
   };
+  /// Narrows `dates` to the dates at which the bound holds, in integers, when the floating-
+  /// point solution of holds_when is sure to be the exact one (see the definition); false,
+  /// leaving `dates` unspecified, otherwise.
+  [[gnu::always_inline]] static inline bool narrow_exactly(const Bound& bound,
+                                                           const ClockState& clock, TimeValue unit,
+                                                           TimeValue now, Interval& dates);
+  /// holds_when by holds_when's own floating-point arithmetic.
+  Interval solved(const Frame& frame) const;
   /// The comparison starting at instruction `pc`, if it is one of a clock and a literal; `pc`
   /// then moves past it.
   static std::optional<Bound> bound_at(const std::vector<bipc::ir::Instr>& instrs, std::size_t& pc);

@@ -44,6 +44,7 @@ ConnectorCache::ConnectorCache(const bipc::ir::System& system, const Layout& lay
       rank_(system.connectors.size(), 0),
       stale_(system.connectors.size(), 0),
       computed_(system.connectors.size(), 0),
+      direct_(system.connectors.size(), 0),
       work_(system.compounds.size()),
       in_work_(system.connectors.size(), 0),
       queued_(system.compounds.size(), 0),
@@ -110,6 +111,7 @@ bool ConnectorCache::start(TimeValue now, bool full) {
   time_passed_ = full || now != last_now_;
   last_now_ = now;
   clear_work();  // a failed computation may have left some behind
+  direct_work_.clear();
   if (!full) return false;
   // A failed computation may have left flags behind.
   stale_.assign(stale_.size(), 1);
@@ -139,9 +141,18 @@ const std::vector<Index>& ConnectorCache::work(Index compound) {
   if (!system_.compounds[compound].priorities.empty())
     return system_.compounds[compound].connectors;
   std::vector<Index>& connectors = work_[compound];
-  if (connectors.size() < 2) return connectors;
-  std::sort(connectors.begin(), connectors.end(),
-            [&](Index a, Index b) { return rank_[a] < rank_[b]; });
+  auto by_rank = [&](Index a, Index b) { return rank_[a] < rank_[b]; };
+  if (connectors.size() > 16) {
+    std::sort(connectors.begin(), connectors.end(), by_rank);
+    return connectors;
+  }
+  // A step's few connectors: insertion sort is cheaper than std::sort's set-up.
+  for (std::size_t i = 1; i < connectors.size(); ++i) {
+    const Index k = connectors[i];
+    std::size_t j = i;
+    for (; j > 0 && by_rank(k, connectors[j - 1]); --j) connectors[j] = connectors[j - 1];
+    connectors[j] = k;
+  }
   return connectors;
 }
 
@@ -155,6 +166,7 @@ void ConnectorCache::priorities_changed(Index k) {
 void ConnectorCache::end() {
   for (Index k : stale_list_) stale_[k] = computed_[k] = 0;
   stale_list_.clear();
+  direct_work_.clear();
   clear_work();
   all_stale_ = false;
 }

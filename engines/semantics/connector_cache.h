@@ -48,7 +48,12 @@ class ConnectorCache {
         for (bipc::ir::Index k : atom_connectors_[atom]) {
           if (stale_[k] || checked_[k] == generation_) continue;
           checked_[k] = generation_;
-          if (!keeps_no_values(k)) mark_stale_with_binders(k);
+          if (keeps_no_values(k)) continue;
+          if (direct_[k]) {
+            direct_work_.push_back(k);
+          } else {
+            mark_stale_with_binders(k);
+          }
         }
       }
       queue_unchanged_work();
@@ -56,6 +61,15 @@ class ConnectorCache {
     for (bipc::ir::Index atom : touched_list_) touched_[atom] = 0;
     touched_list_.clear();
   }
+  /// Marks a connector whose values depend on its atoms' offers only (no guard, no `up`, no
+  /// sub-connector), that no connector binds and whose compound has no priority rules: no other
+  /// connector's values depend on it or it on them, so it may be computed apart from the
+  /// compound order, and a begin() that is not full lists it in direct_work() instead of
+  /// marking it stale.
+  void set_direct(bipc::ir::Index connector) { direct_[connector] = 1; }
+  /// After a begin() that was not full: the direct connectors whose values must be computed
+  /// (the others go through next_compound). Valid until end().
+  const std::vector<bipc::ir::Index>& direct_work() const { return direct_work_; }
   /// After a begin() that was not full: the next compound, deepest (largest index) first, with
   /// connectors to compute or whose priorities to evaluate; false when there is none left.
   /// Processing a compound may add enclosing compounds (priorities_changed), never deeper ones.
@@ -117,7 +131,8 @@ class ConnectorCache {
   std::vector<std::uint8_t> ruled_;    // per connector: its compound has priority rules
   std::vector<bipc::ir::Index> rank_;  // per connector: its position in its compound's list
   IndexSet time_dependent_, urgent_;   // connectors
-  std::vector<std::uint8_t> stale_, computed_;
+  std::vector<std::uint8_t> stale_, computed_, direct_;
+  std::vector<bipc::ir::Index> direct_work_;
   std::vector<bipc::ir::Index> stale_list_;
   // Per compound: the connectors to visit (listed once each: in_work_) and whether the
   // compound is queued; queued compounds wait in a max-heap, since enclosing compounds have

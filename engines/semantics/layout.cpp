@@ -232,6 +232,14 @@ std::string build_layout(const System& system, Layout& layout) {
       if (!transition.from.empty()) entry.first_place = transition.from.front();
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
     }
+    auto& from_place = layout.labelled_from_place.emplace_back();
+    bool state_machine = type.initial_places.size() == 1;
+    for (const bipc::ir::Transition& transition : type.transitions) {
+      state_machine = state_machine && transition.from.size() == 1 && transition.to.size() == 1;
+    }
+    if (!state_machine) continue;
+    from_place.resize(type.places.size());
+    for (const TransitionEntry& entry : labelled) from_place[entry.first_place].push_back(entry);
   }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {
     const bipc::ir::AtomType& type = system.atom_types[atom.type];

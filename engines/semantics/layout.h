@@ -52,6 +52,10 @@ struct Layout {
   std::vector<TimeValue> clock_units;  // per flattened clock
   // Per atom type, in declaration order: transitions labelled by a port, internal ones.
   std::vector<std::vector<TransitionEntry>> labelled_transitions, internal_transitions;
+  /// Per atom type whose net is a state machine (one initial place, every transition from one
+  /// place to one place: exactly one place is marked at any time), per place: the labelled
+  /// transitions from it, in declaration order. Empty for other types.
+  std::vector<std::vector<std::vector<TransitionEntry>>> labelled_from_place;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   /// Per connector: whether `defined` lists every interaction (not when there are too many or
   /// the connector is too wide; it is then maximal_only).

@@ -65,6 +65,7 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
   index_listing();
   index_single_atom_ports();
   index_required_offers();
+  index_direct_connectors();
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(model, functions, call_, options.threads);
   }
@@ -265,7 +266,17 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Index type_index = system_.atoms[atom].type;
-  for (const TransitionEntry& entry : layout_.labelled_transitions[type_index]) {
+  // A state machine looks only at the transitions from its one marked place: the same ones,
+  // in the same order, that are enabled by the marking.
+  const std::vector<std::vector<TransitionEntry>>& from_place =
+      layout_.labelled_from_place[type_index];
+  const std::vector<TransitionEntry>* entries = &layout_.labelled_transitions[type_index];
+  if (!from_place.empty()) {
+    std::size_t marked = 0;
+    while (marked + 1 < from_place.size() && !state_.marking[base + marked]) ++marked;
+    entries = &from_place[marked];
+  }
+  for (const TransitionEntry& entry : *entries) {
     const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
     if (!from_marked(entry, tr, base)) continue;

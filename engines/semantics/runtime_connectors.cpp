@@ -63,6 +63,28 @@ void Runtime::index_single_atom_ports() {
   }
 }
 
+void Runtime::index_direct_connectors() {
+  if (!options_.incremental) return;
+  std::vector<std::uint8_t> bound(system_.connectors.size(), 0);
+  for (const bipc::ir::ConnectorInstance& connector : system_.connectors) {
+    for (const auto& refs : connector.bound) {
+      for (const bipc::ir::PortRef& ref : refs) {
+        if (ref.kind == bipc::ir::PortRef::Kind::Connector) bound[ref.instance] = 1;
+      }
+    }
+  }
+  for (Index k = 0; k < system_.connectors.size(); ++k) {
+    const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
+    bool direct = !single_atom_ports_[k].empty() && !bound[k] && !has_sub_connectors_[k] &&
+                  layout_.rules[connector.parent].empty();
+    for (const bipc::ir::InteractionCode& code :
+         system_.connector_types[connector.type].interactions) {
+      direct = direct && code.guard.empty() && code.up.empty();
+    }
+    if (direct) cache_.set_direct(k);
+  }
+}
+
 void Runtime::compute_sub_connectors(Index k) {
   if (!has_sub_connectors_[k]) return;
   for (const auto& refs : system_.connectors[k].bound) {
@@ -337,7 +359,12 @@ void Runtime::compute_values(bool full) {
     return;
   }
   // Only the compounds, and their connectors, that the cache finds work in: no step walks
-  // every connector.
+  // every connector. Direct connectors first: nothing else depends on them.
+  for (Index k : cache_.direct_work()) {
+    release_values(k);
+    compute_single_offer_interactions(k);
+    recompute_priorities(k);
+  }
   for (Index c = 0; cache_.next_compound(c);) compute_compound(cache_.work(c));
 }
 

@@ -219,12 +219,20 @@ void Runtime::recompute_priorities(Index k) {
     count_connector_items(k);
     return;
   }
-  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
   // A lone value without priority rules has nothing above it: it stays as it is.
   const bool alone = connector_values_[k].size() == 1 && !cache_.ruled(k);
+  if (alone) {
+    InteractionValue& value = values_[*connector_values_[k].begin()];
+    value.after = value.raw;
+    cache_.set_urgent(k, value.raw.urgency != Urgency::Lazy && !value.after.interval.empty());
+    if (!cache_.stale(k)) cache_.priorities_changed(k);
+    count_connector_items(k);
+    return;
+  }
+  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
   bool urgent = false;
   for (Index v : connector_values_[k]) {
-    if (!alone) apply_priorities(values_[v], k);
+    apply_priorities(values_[v], k);
     urgent =
         urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
   }

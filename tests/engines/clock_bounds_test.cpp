@@ -84,6 +84,35 @@ class ClockBoundsTest : public ::testing::Test {
     }
   }
 
+  /// The same over clocks reset to 0 at rate 1 (the integer path of ClockBounds), at dates
+  /// around those at which a clock reaches the literals 0 to 13, within and beyond 2^30 ns of
+  /// its reset.
+  void expect_same_dates_after_resets(const Code& code) {
+    const std::optional<ClockBounds> bounds = ClockBounds::of(code);
+    ASSERT_TRUE(bounds);
+    std::mt19937_64 random(11);
+    std::uniform_int_distribution<TimeValue> since(0, TimeValue{1} << 40);
+    std::uniform_int_distribution<TimeValue> literal(0, 13), offset(-2, 2);
+    const TimeValue spans[] = {0,
+                               1'000,
+                               TimeValue{1} << 29,
+                               (TimeValue{1} << 30) - 1,
+                               TimeValue{1} << 30,
+                               TimeValue{1} << 35};
+    for (int i = 0; i < 4000; ++i) {
+      clocks_[0] = {0.0, since(random), 1.0};
+      clocks_[1] = {0.0, since(random), 1.0};
+      Frame frame;
+      frame.atom_data = data_;
+      frame.clocks = clocks_;
+      frame.clock_units = units_;
+      const bipc::ir::Index c = static_cast<bipc::ir::Index>(i % 2);
+      frame.now = i % 3 == 0 ? clocks_[c].since + spans[(i / 3) % 6] + offset(random)
+                             : clocks_[c].since + literal(random) * units_[c] + offset(random);
+      ASSERT_EQ(bounds->holds_when(frame), eval_.holds_when(code, frame)) << "state " << i;
+    }
+  }
+
   bipc::ir::System system_;
   BoundFunctions functions_;
   std::ostringstream out_;
@@ -110,6 +139,19 @@ TEST_F(ClockBoundsTest, ChainsOfConjunctions) {
   expect_same_dates(conjunction(low, high));
   expect_same_dates(conjunction(conjunction(low, high), other));
   expect_same_dates(conjunction(conjunction(other, high), low));
+}
+
+TEST_F(ClockBoundsTest, ResetClocksGiveTheInterpretersDates) {
+  for (Op cmp : {Op::Lt, Op::Le, Op::Gt, Op::Ge, Op::Eq}) {
+    expect_same_dates_after_resets({{clock(0), push_int(5), op(Op::IntToFloat), op(cmp)}});
+    expect_same_dates_after_resets({{push_float(13.0), clock(1), op(cmp)}});
+    expect_same_dates_after_resets({{clock(1), push_float(2.5), op(cmp)}});
+  }
+  const Code low{{clock(0), push_float(1.0), op(Op::Ge)}};
+  const Code high{{clock(0), push_int(5), op(Op::IntToFloat), op(Op::Le)}};
+  const Code other{{push_float(12.0), clock(1), op(Op::Gt)}};
+  expect_same_dates_after_resets(conjunction(low, high));
+  expect_same_dates_after_resets(conjunction(conjunction(other, high), low));
 }
 
 TEST_F(ClockBoundsTest, OtherFormsAreLeftToTheInterpreter) {

@@ -12,21 +12,9 @@ namespace smcbip::engines {
 namespace detail {
 
 using bipc::Urgency;
+using engines::narrow;
 
 inline Urgency stronger(Urgency a, Urgency b) { return a > b ? a : b; }
-
-/// a = a.intersect(b), field by field (see compute_items). Inlined so that `a` stays in
-/// registers: through memory, each call stalled on store forwarding.
-[[gnu::always_inline]] inline void narrow(Interval& a, const Interval& b) {
-  if (b.left > a.left || (b.left == a.left && b.left_open)) {
-    a.left = b.left;
-    a.left_open = b.left_open;
-  }
-  if (b.right < a.right || (b.right == a.right && b.right_open)) {
-    a.right = b.right;
-    a.right_open = b.right_open;
-  }
-}
 
 /// The urgent part of a constraint: lazy none, delayable its closed right end, eager all of it.
 inline Interval urgent_part(const Constraint& c) {
