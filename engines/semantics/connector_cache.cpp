@@ -98,6 +98,7 @@ void ConnectorCache::queue_compound(Index compound) {
 }
 
 void ConnectorCache::clear_work() {
+  if (queue_.empty() && worked_.empty()) return;
   for (; !queue_.empty(); queue_.pop()) worked_.push_back(queue_.top());
   for (Index compound : worked_) {
     for (Index k : work_[compound]) in_work_[k] = 0;

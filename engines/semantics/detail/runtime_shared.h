@@ -60,7 +60,11 @@ inline bool subset(PortSet a, PortSet b) { return (a & ~b) == 0; }
 /// The value chosen for a port parameter taking part in an interaction value.
 inline const PortValue& chosen(const InteractionValue& v, Index port) {
   if (port < kPortSetBits && v.ports != 0) {
-    const PortSet below = v.ports & ((PortSet{1} << port) - 1);
+    const PortSet lower_ports = (PortSet{1} << port) - 1;
+    const PortSet below = v.ports & lower_ports;
+    // Every lower port taking part (a rendezvous): no count needed, which without a popcount
+    // instruction in the baseline target is a library call.
+    if (below == lower_ports) return v.choice[port];
     return v.choice[static_cast<std::size_t>(std::popcount(below))];
   }
   // Wider connectors: the choice is in port order.
