@@ -1,4 +1,4 @@
-# Lowering of a checked root to the IR, and the IR's JSON and Graphviz views.
+# Lowering of a checked root to the IR.
 list(APPEND BIPC_SOURCES
   lower/compile_code.cpp
   lower/const_eval.cpp
@@ -7,8 +7,4 @@ list(APPEND BIPC_SOURCES
   lower/lower_connector_type.cpp
   lower/lower_stochastic.cpp
   lower/instantiate.cpp
-  lower/instance_checks.cpp
-  ir/ir.cpp
-  ir/ir_json.cpp
-  ir/ir_text.cpp
-  ir/ir_dot.cpp)
+  lower/instance_checks.cpp)

@@ -1,0 +1,11 @@
+# The IR: its helpers, its views (outline, JSON, Graphviz) and its full data encoding.
+list(APPEND BIPC_SOURCES
+  ir/ir.cpp
+  ir/ir_json.cpp
+  ir/ir_text.cpp
+  ir/ir_dot.cpp
+  ir/ir_data_write.cpp
+  ir/ir_data_read.cpp
+  ir/ir_data_check.cpp
+  ir/ir_data_bytes.cpp
+  ir/detail/ir_data_reader.cpp)
