@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libboost-dev libboost-graph-dev libgsl-dev libeigen3-dev libz3-dev
-  nlohmann-json3-dev libcli11-dev libpugixml-dev
+  nlohmann-json3-dev libcli11-dev libpugixml-dev libssl-dev
   libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz

@@ -2,7 +2,7 @@
 //
 // Unlike ir_json.h, which is a view for people, this encoding keeps every field of System and
 // of everything it holds, so that from_data(to_data(s)) is s again field by field. Generated
-// projects embed it.
+// projects embed it, and model_hash.h hashes it.
 //
 // Layout: each struct of ir.h is a JSON object whose keys are the C++ field names, except
 //  - an Instr, the bulk of the data, which is an array [op, kind, scope, arg, index, imm] where

@@ -1,4 +1,5 @@
-# The IR: its helpers, its views (outline, JSON, Graphviz) and its full data encoding.
+# The IR: its helpers, its views (outline, JSON, Graphviz), its full data encoding and the
+# model hash.
 list(APPEND BIPC_SOURCES
   ir/ir.cpp
   ir/ir_json.cpp
@@ -6,6 +7,8 @@ list(APPEND BIPC_SOURCES
   ir/ir_dot.cpp
   ir/ir_data_write.cpp
   ir/ir_data_read.cpp
+  ir/detail/ir_data_reader.cpp
   ir/ir_data_check.cpp
   ir/ir_data_bytes.cpp
-  ir/detail/ir_data_reader.cpp)
+  ir/model_hash.cpp
+  ir/detail/sha256.cpp)

@@ -10,7 +10,8 @@ set(BIPC_PUBLIC_HEADERS
   bipc/ir/ir_json.h
   bipc/ir/ir_dot.h
   bipc/ir/ir_text.h
-  bipc/ir/ir_data.h)
+  bipc/ir/ir_data.h
+  bipc/ir/model_hash.h)
 set(BIPC_HEADER_UNITS)
 foreach(header IN LISTS BIPC_PUBLIC_HEADERS)
   string(MAKE_C_IDENTIFIER ${header} unit_name)

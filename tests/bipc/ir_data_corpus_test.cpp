@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "bipc/ir/ir_data.h"
+#include "bipc/ir/model_hash.h"
 #include "ir_data_test_util.h"
 #include "shared_data.h"
 
@@ -159,7 +160,7 @@ TEST(IrDataRoundTrip, ConformanceModels) {
   EXPECT_GE(round_trips, roots.size() - 3);
 }
 
-TEST(IrDataBytes, SameModelGivesSameBytes) {
+TEST(IrDataBytes, SameModelGivesSameBytesAndHash) {
   for (const fs::path& file : project_models()) {
     SCOPED_TRACE(file.filename().string());
     const std::optional<ir::System> first = load_system(file, "", {});
@@ -169,6 +170,7 @@ TEST(IrDataBytes, SameModelGivesSameBytes) {
     EXPECT_TRUE(ir::to_bytes(*first) == bytes) << "two encodings of one System differ";
     EXPECT_TRUE(ir::to_bytes(*second) == bytes) << "two checks of one model encode differently";
     EXPECT_EQ(ir::to_data(*first).dump(), ir::to_data(*second).dump());
+    EXPECT_EQ(ir::model_hash(*first, {}), ir::model_hash(*second, {}));
   }
 }
 

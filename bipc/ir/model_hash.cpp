@@ -1,0 +1,80 @@
+// Hashes a model's IR bytes and extern sources (layout in model_hash.h), and finds its sources.
+#include "bipc/ir/model_hash.h"
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bipc/ir/detail/sha256.h"
+#include "bipc/ir/ir_data.h"
+
+namespace smcbip::bipc::ir {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void update_length(detail::Sha256& sha, std::uint64_t n) {
+  std::array<std::uint8_t, 8> bytes{};
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(n >> (8 * i));
+  sha.update(bytes);
+}
+
+bool is_file(const fs::path& path) {
+  std::error_code error;
+  return fs::is_regular_file(path, error);
+}
+
+/// The whole file at `path`; throws ExternSourceError naming it as `name`.
+std::string read_source(const fs::path& path, const std::string& name) {
+  if (!is_file(path)) throw ExternSourceError{name, "no such file: " + path.string()};
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream contents;
+  if (in) contents << in.rdbuf();
+  if (!in || in.bad()) {
+    throw ExternSourceError{name, "cannot read " + path.string() + ": " + std::strerror(errno)};
+  }
+  return contents.str();
+}
+
+}  // namespace
+
+std::string model_hash(const System& system, const ExternSources& extern_sources) {
+  detail::Sha256 sha;
+  sha.update(to_bytes(system));
+  for (const auto& [name, contents] : extern_sources) {
+    update_length(sha, name.size());
+    sha.update(name);
+    update_length(sha, contents.size());
+    sha.update(contents);
+  }
+  return sha.hex_digest();
+}
+
+ExternSources extern_sources_of(const System& system, const std::vector<std::string>& search_dirs) {
+  ExternSources sources;
+  for (const std::string& source : system.cpp_sources) {
+    sources.emplace_back(source, read_source(source, source));
+  }
+  for (const std::string& header : system.cpp_includes) {
+    if (fs::path(header).is_absolute()) {
+      sources.emplace_back(header, read_source(header, header));
+      continue;
+    }
+    std::vector<std::string> dirs = system.cpp_include_dirs;
+    dirs.insert(dirs.end(), search_dirs.begin(), search_dirs.end());
+    for (const std::string& dir : dirs) {
+      const fs::path candidate = fs::path(dir) / header;
+      if (is_file(candidate)) {
+        sources.emplace_back(header, read_source(candidate, header));
+        break;
+      }
+    }
+  }
+  return sources;
+}
+
+}  // namespace smcbip::bipc::ir

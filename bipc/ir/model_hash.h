@@ -1,0 +1,48 @@
+// The identity of a model: SHA-256 over its IR's bytes and its extern C++ sources.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+
+namespace smcbip::bipc::ir {
+
+/// Extern C++ files of a model as (name, contents) pairs.
+using ExternSources = std::vector<std::pair<std::string, std::string>>;
+
+/// The lowercase hex SHA-256 (64 digits) of these bytes, in this order:
+///
+///   to_bytes(system)                      the IR as CBOR (ir_data.h), not length-prefixed
+///   for each (name, contents) in extern_sources, in the order given:
+///     u64le(name.size())      name bytes
+///     u64le(contents.size())  contents bytes
+///
+/// where u64le(n) is n as 8 bytes, least significant first. The CBOR is one data item with
+/// definite lengths, so it ends where its own header says; every later field is
+/// length-prefixed, so no two different inputs give the same byte string (moving a byte from
+/// one name or file into the next changes a length). The same System and sources always give
+/// the same hash.
+std::string model_hash(const System& system, const ExternSources& extern_sources);
+
+/// An extern source named by the model that cannot be read.
+struct ExternSourceError {
+  std::string path;     // as the model names it
+  std::string message;  // e.g. "no such file"
+};
+
+/// The extern C++ files of `system`, read from disk, for model_hash. In this order:
+///  - each of `cpp_sources` (`@cpp(src=...)`), named and read as the IR holds it: the front end
+///    has already resolved a relative name against the folder of the package naming it, so a
+///    relative path here is relative to the current directory, as it was for the front end;
+///  - each of `cpp_includes` (`@cpp(include=...)`), named as written, read from the first of
+///    `cpp_include_dirs` (the naming packages' folders), then of `search_dirs` (the -I folders,
+///    as the front end searches packages), that holds it; an absolute name is read as is.
+///    A relative header found in none of them is taken for a header of the C++ toolchain
+///    (`stdio.h`, `unistd.h`) and left out: it is no part of the model.
+/// Throws ExternSourceError for a source file, or an absolute header, that is missing or
+/// unreadable.
+ExternSources extern_sources_of(const System& system, const std::vector<std::string>& search_dirs);
+
+}  // namespace smcbip::bipc::ir
