@@ -8,6 +8,7 @@
 #include "bipc/ir/ir_data.h"
 #include "bipc/ir/model_hash.h"
 #include "ir_data_test_util.h"
+#include "lower_test_util.h"
 #include "shared_data.h"
 
 namespace smcbip::bipc {
@@ -158,6 +159,32 @@ TEST(IrDataRoundTrip, ConformanceModels) {
   RecordProperty("round_trips", std::to_string(round_trips));
   // conformance.sh expects three rejections; all the others check and must round-trip.
   EXPECT_GE(round_trips, roots.size() - 3);
+}
+
+// Constant folding can overflow to infinity: such a model must round-trip as any other.
+TEST(IrDataRoundTrip, FoldedInfinity) {
+  auto lowered = lower_test::lower_ok(
+      "package fin\n"
+      "  const data float BIG = 1e308 * 10.0\n"
+      "  port type P()\n"
+      "  atom type A(float g)\n"
+      "    data float x = BIG\n"
+      "    export port P p()\n"
+      "    place S\n"
+      "    initial to S\n"
+      "    on p from S to S provided (x > -BIG)\n"
+      "  end\n"
+      "  compound type Top()\n"
+      "    component A a(BIG)\n"
+      "  end\n"
+      "end\n",
+      "Top()");
+  ASSERT_TRUE(lowered->system);
+  const nlohmann::json data = ir::to_data(*lowered->system);
+  EXPECT_EQ(data["atoms"][0]["params"][0]["f"], "f64:7ff0000000000000");
+  EXPECT_EQ(data["atom_types"][0]["data"][0]["initial_value"]["instrs"][0][5],
+            "f64:7ff0000000000000");
+  expect_round_trip(*lowered->system, "folded infinity");
 }
 
 TEST(IrDataBytes, SameModelGivesSameBytesAndHash) {
