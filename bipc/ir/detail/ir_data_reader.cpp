@@ -18,10 +18,8 @@ std::string Path::text() const {
   return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
 }
 
-void fail(const Path& path, const std::string& what) { fail(path.text(), what); }
-
-void fail(const std::string& path, const std::string& what) {
-  throw IrDataError{path + ": " + what};
+void fail(const Path& path, const std::string& what) {
+  throw IrDataError{path.text() + ": " + what};
 }
 
 std::string got(const json& value) { return std::string(", got ") + value.type_name(); }

@@ -33,7 +33,6 @@ struct Path {
 
 /// Throws IrDataError{"<path>: <what>"}.
 [[noreturn]] void fail(const Path& path, const std::string& what);
-[[noreturn]] void fail(const std::string& path, const std::string& what);
 
 /// A value and where it is.
 struct Field {
