@@ -4,9 +4,8 @@
 # Usage: conformance.sh BIN_DIR
 #
 # Every model is checked twice: without a root (types only) and with the root its original test
-# used (EXPECTED.md, sections 5 and 11; conformance_roots.txt lists them). Each run must exit 0,
-# except the three models the reference compiler rejects for an unguarded priority cycle, which
-# must exit 2 and say "cycle".
+# used (EXPECTED.md, sections 5 and 11). Each run must exit 0, except the three models the
+# reference compiler rejects for an unguarded priority cycle, which must exit 2 and say "cycle".
 # Shared data root: $SMCBIP_SHARED_DATA, by default <repository root>/../shared/data. Without it
 # the script prints one line and exits 77 (CTest SKIP_RETURN_CODE).
 #
@@ -40,16 +39,105 @@ for required in "$conformance_dir" "$esrocos_dir"; do
   fi
 done
 
-# Root of each model, as its original test instantiated it: one 'KEY ROOT' a line.
-declare -A roots=()
-while read -r key root; do
-  [[ -z $key || $key == \#* ]] && continue
-  roots[$key]=$root
-done < "$script_dir/conformance_roots.txt"
-if [[ ${#roots[@]} -eq 0 ]]; then
-  echo "conformance: no roots read from $script_dir/conformance_roots.txt" >&2
-  exit 1
-fi
+# Root of each model, as its original test instantiated it (EXPECTED.md sections 5 and 11).
+declare -A roots=(
+  [compile_only/atom_port_values]='CT()'
+  [compile_only/broadcast_reverted]='MyCompoundType()'
+  [compile_only/conflict_component_prio]='Comp()'
+  [compile_only/conflict_packages]='Composite()'
+  [compile_only/conflict_packages2]='Composite()'
+  [compile_only/conflict_type_instance]='Comp()'
+  [compile_only/const_data]='CT()'
+  [compile_only/hierarchy]='MyCompound()'
+  [compile_only/internal_port]='MyCompound()'
+  [compile_only/modulo8]='Modulo8()'
+  [compile_only/periodic_tick]='MyCompound()'
+  [compile_only/priorities_atom]='MyCompound()'
+  [compile_only/priorities_wildcard]='MyCompound()'
+  [compile_only/priority_rules_atom_cycle]='MyCompoundType()'
+  [compile_only/priority_rules_atom_cycle2]='MyCompoundType()'
+  [compile_only/tempcontrol]='Top()'
+  [running/and_expressions]='AndExpressions()'
+  [running/atom_internal_transitions]='CT()'
+  [running/broadcast]='MyCompoundType()'
+  [running/broadcast_browser]='MyCompoundType()'
+  [running/broadcast_maximal]='MyCompoundType()'
+  [running/broadcast_reverted]='MyCompoundType()'
+  [running/broadcast_up]='MyCompoundType()'
+  [running/broadcast_up_down]='MyCompoundType()'
+  [running/clock_speed]='Compound()'
+  [running/clock_units]='Compound()'
+  [running/const_data]='Top()'
+  [running/cyclic]='CT()'
+  [running/demosaicing9]='Demosaicer()'
+  [running/dining_philo]='DiningPhilo()'
+  [running/dining_philo_flat]='DiningPhilo()'
+  [running/double_compound]='System()'
+  [running/doublecounter]='CT()'
+  [running/doublecounter2]='CT()'
+  [running/external]='Compound()'
+  [running/external_error]='Compound()'
+  [running/guarded_transitions]='MyCompoundType()'
+  [running/hierarch_priority]='MyCompoundType()'
+  [running/hierarchical]='MyCompoundType()'
+  [running/internal_export_compound]='BIG_CT()'
+  [running/invariants]='CT()'
+  [running/invariants2]='CT()'
+  [running/maximal_progress]='Top()'
+  [running/maximal_progress_hierarchy]='System()'
+  [running/multi_export_atom]='MyCompoundType()'
+  [running/multi_export_compound]='Top()'
+  [running/multi_export_compound2]='Top()'
+  [running/nested]='MyCompoundType()'
+  [running/nested2]='MyCompoundType()'
+  [running/nested3]='MyCompoundType()'
+  [running/or_expressions]='OrExpressions()'
+  [running/petri_net]='MyCompoundType()'
+  [running/petri_net_deterministic]='MyCompoundType()'
+  [running/petri_net_non_deterministic]='MyCompoundType()'
+  [running/petri_net_non_deterministic2]='MyCompoundType()'
+  [running/petri_net_non_deterministic3]='MyCompoundType()'
+  [running/petri_net_non_safe]='MyCompoundType()'
+  [running/priority_rules]='MyCompoundType()'
+  [running/priority_rules_atom]='MyCompoundType()'
+  [running/priority_rules_atom_closure]='MyCompoundType()'
+  [running/priority_rules_atom_cycle3]='MyCompoundType()'
+  [running/priority_rules_atom_cycle4]='MyCompoundType()'
+  [running/priority_rules_atom_export]='MyCompoundType()'
+  [running/priority_rules_atom_internal]='MyCompoundType()'
+  [running/priority_rules_atom_wildcard]='MyCompoundType()'
+  [running/priority_rules_cycle]='MyCompoundType()'
+  [running/priority_rules_cycle2]='MyCompoundType()'
+  [running/priority_rules_cycle3]='MyCompoundType()'
+  [running/priority_rules_cycle_hierarchy]='CTH()'
+  [running/priority_rules_guard]='MyCompoundType()'
+  [running/priority_rules_guard_external]='EvilPriorityRules()'
+  [running/priority_rules_no_cycle]='MyCompoundType()'
+  [running/priority_rules_no_cycle2]='MyCompoundType()'
+  [running/priority_rules_wildcard]='MyCompoundType()'
+  [running/rendezvous_down]='MyCompoundType()'
+  [running/simple10counter]='CT()'
+  [running/test_resume]='Compound()'
+  [running/test_resume2]='Compound()'
+  [running/test_resume3]='Compound()'
+  [running/test_resume3_error]='Compound()'
+  [running/test_resume4]='Compound()'
+  [running/test_resume4_error]='Compound()'
+  [running/test_resume_deadlock]='Compound()'
+  [running/test_resume_error]='Compound()'
+  [running/time_lock1]='Compound()'
+  [running/time_lock2]='Compound()'
+  [running/time_lock3]='Compound()'
+  [running/timed_tempcontrol]='Top()'
+  [running/writers_buffer]='Compound()'
+  [running_multithread_extra/conflicting]='Comp()'
+  [running_multithread_extra/non_conflicting]='Comp()'
+  [running_multithread_extra/priority_rules_cycle4]='Compound()'
+  [running_multithread_extra/priority_rules_cycle5]='Level1()'
+  [running_multithread_extra/priority_rules_no_cycle3]='MyCompoundType()'
+  [running_multithread_extra/priority_rules_no_cycle4]='Compound()'
+  [running_multithread_extra/tempcontrol]='Top()'
+)
 
 # Packages that only serve other models: checked without a root.
 declare -A helper_packages=(

@@ -116,21 +116,33 @@ TEST(IrDataRoundTrip, GoldenAndCrossEngineModels) {
   EXPECT_GE(checked, 15u);  // 12 valid, 3 tool models that run, 2 cross-engine models
 }
 
-/// One line of conformance_roots.txt: a model below bip-conformance and its root.
+/// One entry of conformance.sh's root table: a model below bip-conformance and its root.
 struct ConformanceRoot {
   std::string key;  // e.g. running/clock_speed
   std::string root;
 };
 
-/// The roots conformance.sh uses, from the file it reads them from.
+/// The roots conformance.sh uses, read from its `declare -A roots=(` table, whose lines are
+/// `  [running/clock_speed]='Compound()'` (tests/engines' generated conformance reads the same
+/// table).
 std::vector<ConformanceRoot> conformance_roots() {
-  std::ifstream in(source_dir() / "tests/bipc/conformance_roots.txt");
+  std::ifstream in(source_dir() / "tests/bipc/conformance.sh");
   std::vector<ConformanceRoot> roots;
+  bool in_table = false;
   for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line.starts_with("#")) continue;
-    const std::size_t space = line.find(' ');
-    if (space == std::string::npos) continue;
-    roots.push_back({line.substr(0, space), line.substr(line.find_first_not_of(' ', space))});
+    if (line == "declare -A roots=(") {
+      in_table = true;
+    } else if (in_table && line == ")") {
+      break;
+    } else if (in_table) {
+      const std::size_t open = line.find('['), close = line.find("]='");
+      if (open == std::string::npos || close == std::string::npos || !line.ends_with('\'')) {
+        ADD_FAILURE() << "unexpected line in conformance.sh's root table: " << line;
+        continue;
+      }
+      roots.push_back({line.substr(open + 1, close - open - 1),
+                       line.substr(close + 3, line.size() - close - 4)});
+    }
   }
   return roots;
 }
@@ -141,7 +153,7 @@ TEST(IrDataRoundTrip, ConformanceModels) {
     GTEST_SKIP() << "shared conformance data not found (set SMCBIP_SHARED_DATA)";
   }
   const std::vector<ConformanceRoot> roots = conformance_roots();
-  ASSERT_GE(roots.size(), 90u) << "conformance_roots.txt not read";
+  ASSERT_GE(roots.size(), 90u) << "conformance.sh's root table not read";
   std::size_t round_trips = 0;
   for (const ConformanceRoot& r : roots) {
     const fs::path file = conformance / (r.key + ".bip");
