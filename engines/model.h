@@ -62,4 +62,25 @@ class InterpretedModel final : public Model {
   std::unique_ptr<const GuardBounds> guard_bounds_;  // shared by the threads' evaluators
 };
 
+/// A model whose code was compiled from the C++ that `bipc gen` generated for `system`: the
+/// structure is that System (it must be the one generated from, with the same Code numbering),
+/// the code comes from the generated factory (`make_model_code`).
+class CompiledModel final : public Model {
+ public:
+  using CodeFactory = std::unique_ptr<ModelCode> (*)(const bipc::ir::System& system,
+                                                     const BoundFunctions& functions,
+                                                     CallContext& call,
+                                                     const GuardBounds* guard_bounds);
+  CompiledModel(const bipc::ir::System& system, CodeFactory factory);
+  ~CompiledModel() override;
+  const bipc::ir::System& system() const override { return system_; }
+  std::unique_ptr<ModelCode> make_code(const BoundFunctions& functions,
+                                       CallContext& call) const override;
+
+ private:
+  const bipc::ir::System& system_;
+  CodeFactory factory_;
+  std::unique_ptr<const GuardBounds> guard_bounds_;
+};
+
 }  // namespace smcbip::engines

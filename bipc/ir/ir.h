@@ -342,10 +342,50 @@ struct System {
   std::uint32_t code_count = 0;  // Code::id runs from 0 to code_count - 1
 };
 
-/// Numbers every Code of the system (Code::id, System::code_count) in a fixed order: atom types
-/// (data initial values, initial action and resume, ports' stochastic parameters, transitions'
-/// guard, action and resume, priorities, invariants), connector types (data initial values,
-/// interactions' guard, up and down), then compounds' priority guards.
+/// What a Code is for, as the engines run it.
+enum class CodeUse : std::uint8_t {
+  Value,      // an expression evaluated to a value (initial values, stochastic parameters)
+  Statement,  // a statement block executed for its effects (actions, up, down)
+  Guard,      // a condition, possibly over clocks (transition guards, resumes, invariants,
+              // priorities, connector guards)
+};
+
+/// Calls `visit(code, use)` on every Code of the system (const or not) in this order: atom
+/// types (data initial values, initial action and resume, ports' stochastic parameters,
+/// transitions' guard, action and resume, priorities, invariants), connector types (data initial
+/// values, interactions' guard, up and down), then compounds' priority guards.
+template <class SystemT, class Visit>
+void for_each_code(SystemT& system, Visit&& visit) {
+  for (auto& type : system.atom_types) {
+    for (auto& d : type.data) visit(d.initial_value, CodeUse::Value);
+    visit(type.initial_action, CodeUse::Statement);
+    if (type.initial_resume) visit(type.initial_resume->guard, CodeUse::Guard);
+    for (auto& port : type.ports) {
+      if (!port.stochastic) continue;
+      for (auto& param : port.stochastic->params) visit(param, CodeUse::Value);
+    }
+    for (auto& t : type.transitions) {
+      visit(t.guard, CodeUse::Guard);
+      visit(t.action, CodeUse::Statement);
+      if (t.resume) visit(t.resume->guard, CodeUse::Guard);
+    }
+    for (auto& p : type.priorities) visit(p.guard, CodeUse::Guard);
+    for (auto& inv : type.invariants) visit(inv.guard, CodeUse::Guard);
+  }
+  for (auto& type : system.connector_types) {
+    for (auto& d : type.data) visit(d.initial_value, CodeUse::Value);
+    for (auto& code : type.interactions) {
+      visit(code.guard, CodeUse::Guard);
+      visit(code.up, CodeUse::Statement);
+      visit(code.down, CodeUse::Statement);
+    }
+  }
+  for (auto& compound : system.compounds) {
+    for (auto& p : compound.priorities) visit(p.guard, CodeUse::Guard);
+  }
+}
+
+/// Numbers every Code of the system (Code::id, System::code_count) in for_each_code's order.
 void number_code(System& system);
 
 /// The last component of a dotted path or qualified name: "a.b.c" -> "c".

@@ -1,14 +1,17 @@
-// bipc: check BIP2 models, draw their architecture, dump their IR.
+// bipc: check BIP2 models, draw their architecture, dump their IR, generate C++.
 //
 // Exit codes: 0 success, 2 input or usage error, 3 internal error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
 
 #include "bipc/bipc.h"
+#include "bipc/codegen/code_cpp.h"
+#include "bipc/codegen/generate_cpp.h"
 #include "bipc/ir/ir_dot.h"
 #include "bipc/ir/ir_json.h"
 #include "bipc/ir/ir_text.h"
@@ -69,6 +72,60 @@ int run_ir(const FrontendOptions& options, const std::string& output, bool json_
   return kOk;
 }
 
+/// Writes every file into `folder` (created if needed); each goes through a temporary file, and
+/// none is renamed into place before all were written.
+bool write_files(const std::string& folder, const std::vector<codegen::GeneratedFile>& files,
+                 std::string& error) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) {
+    error = "cannot create the folder " + folder + ": " + ec.message();
+    return false;
+  }
+  std::vector<std::pair<std::string, std::string>> written;  // temporary, final
+  for (const codegen::GeneratedFile& file : files) {
+    const std::string path = folder + "/" + file.name;
+    const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
+    if (temporary.empty()) {
+      error = "cannot write " + path;
+      for (const auto& [done, final_path] : written) std::filesystem::remove(done, ec);
+      return false;
+    }
+    written.emplace_back(temporary, path);
+  }
+  for (const auto& [temporary, path] : written) {
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+      error = "cannot write " + path + ": " + ec.message();
+      return false;
+    }
+  }
+  return true;
+}
+
+int run_gen(const FrontendOptions& options, const std::string& output,
+            const codegen::GenerateOptions& gen) {
+  std::string error;
+  if (!codegen::valid_namespace(gen.name_space, error)) {
+    std::cerr << "bipc: error: --namespace: " << error << "\n";
+    return kInputError;
+  }
+  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  if (!report(result) || !result.system) return kInputError;
+  std::vector<codegen::GeneratedFile> files;
+  try {
+    files = codegen::generate_cpp(*result.system, gen);
+  } catch (const codegen::UntranslatableCode& untranslatable) {
+    std::cerr << "bipc: internal error: " << untranslatable.message << "\n";
+    return kInternalError;
+  }
+  if (!write_files(output, files, error)) {
+    std::cerr << "bipc: error: " << error << "\n";
+    return kInputError;
+  }
+  return kOk;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"bipc: the BIP2 front end of smcbip (check, draw, dump the IR)"};
   app.require_subcommand(1);
@@ -92,6 +149,15 @@ int run(int argc, char** argv) {
                    "the complete IR as JSON (default: an outline of the instances)");
   ir_cmd->add_option("-o,--output", ir_output, "output file (default: stdout)");
 
+  FrontendOptions gen_options;
+  std::string gen_output;
+  codegen::GenerateOptions gen;
+  CLI::App* gen_cmd = app.add_subcommand("gen", "generate the C++ of a root instantiation");
+  register_frontend_options(*gen_cmd, gen_options);
+  gen_cmd->add_option("-o,--output", gen_output, "output folder (created if needed)")->required();
+  gen_cmd->add_option("--namespace", gen.name_space, "C++ namespace of the generated code")
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -101,6 +167,7 @@ int run(int argc, char** argv) {
   }
   if (check->parsed()) return run_check(check_options);
   if (dot->parsed()) return run_dot(dot_options, dot_output);
+  if (gen_cmd->parsed()) return run_gen(gen_options, gen_output, gen);
   return run_ir(ir_options, ir_output, json);
 }
 

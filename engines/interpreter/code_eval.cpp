@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engines/interpreter/clock_bounds.h"
+#include "engines/interpreter/code_ops.h"
 #include "engines/interpreter/detail/time_sets.h"
 
 namespace smcbip::engines {
@@ -14,111 +15,14 @@ namespace {
 using bipc::ir::Instr;
 using bipc::ir::Op;
 using bipc::ir::Scope;
+using code_ops::arithmetic;
+using code_ops::compare;
 
-std::int64_t wrap_add(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
-}
-std::int64_t wrap_sub(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) - static_cast<std::uint64_t>(b));
-}
-std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
-}
+Val* slot(const Instr& in, const Frame& f) { return code_ops::slot(in.scope, in.index, in.arg, f); }
 
 bool is_jump(Op op) {
   return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
          op == Op::JumpIfTrueKeep;
-}
-
-inline Val* slot(const Instr& in, const Frame& f) {
-  switch (in.scope) {
-    case Scope::AtomData:
-      return f.atom_data + in.index;
-    case Scope::AtomParam:
-      return const_cast<Val*>(f.atom_params + in.index);
-    case Scope::ConnectorData:
-      return f.connector_data + in.index;
-    case Scope::PortParam:
-      return f.port_slot(f.port_context, in.index, in.arg);
-    case Scope::InstanceData:
-      return f.instance_slot(f.instance_context, in.index, in.arg);
-    case Scope::Clock:
-      break;
-  }
-  return nullptr;
-}
-
-bool compare(Op op, ValueKind kind, Val a, Val b, const StringPool& strings) {
-  int order = 0;
-  switch (kind) {
-    case ValueKind::Bool:
-      order = static_cast<int>(a.b) - static_cast<int>(b.b);
-      break;
-    case ValueKind::Float:
-      order = a.f < b.f ? -1 : (a.f > b.f ? 1 : 0);
-      break;
-    case ValueKind::String:
-      order = a.s == b.s ? 0 : strings.text(a.s).compare(strings.text(b.s));
-      break;
-    default:
-      order = a.i < b.i ? -1 : (a.i > b.i ? 1 : 0);
-      break;
-  }
-  switch (op) {
-    case Op::Eq:
-      return order == 0;
-    case Op::Ne:
-      return order != 0;
-    case Op::Lt:
-      return order < 0;
-    case Op::Le:
-      return order <= 0;
-    case Op::Gt:
-      return order > 0;
-    default:
-      return order >= 0;
-  }
-}
-
-Val arithmetic(Op op, ValueKind kind, Val a, Val b) {
-  if (kind == ValueKind::Float) {
-    switch (op) {
-      case Op::Add:
-        return make_float(a.f + b.f);
-      case Op::Sub:
-        return make_float(a.f - b.f);
-      case Op::Mul:
-        return make_float(a.f * b.f);
-      case Op::Div:
-        if (b.f == 0.0) throw CodeFault{"division by zero"};
-        return make_float(a.f / b.f);
-      default:
-        if (b.f == 0.0) throw CodeFault{"modulo by zero"};
-        return make_float(std::fmod(a.f, b.f));
-    }
-  }
-  switch (op) {
-    case Op::Add:
-      return make_int(wrap_add(a.i, b.i));
-    case Op::Sub:
-      return make_int(wrap_sub(a.i, b.i));
-    case Op::Mul:
-      return make_int(wrap_mul(a.i, b.i));
-    case Op::Div:
-      if (b.i == 0) throw CodeFault{"division by zero"};
-      if (b.i == -1) return make_int(wrap_sub(0, a.i));
-      return make_int(a.i / b.i);
-    case Op::Mod:
-      if (b.i == 0) throw CodeFault{"modulo by zero"};
-      if (b.i == -1) return make_int(0);
-      return make_int(a.i % b.i);
-    case Op::BitAnd:
-      return make_int(a.i & b.i);
-    case Op::BitOr:
-      return make_int(a.i | b.i);
-    default:
-      return make_int(a.i ^ b.i);
-  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -195,12 +99,13 @@ void CodeEvaluator::execute(const bipc::ir::Code& code, const Frame& frame) {
   run(code, frame);
 }
 
-Val CodeEvaluator::call(const Instr& in, const Val* args_end) {
-  const Externs::Function* f = functions_.functions[in.index];
-  const std::vector<ValueKind>& kinds = functions_.arg_kinds[in.index];
-  const std::size_t count = in.arg;
+Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& functions,
+                          CallContext& call, Index function, std::size_t count,
+                          const Val* args_end) {
+  const Externs::Function* f = functions.functions[function];
+  const std::vector<ValueKind>& kinds = functions.arg_kinds[function];
   if (!f) {
-    const bipc::ir::ExternFunction& decl = system_.functions[in.index];
+    const bipc::ir::ExternFunction& decl = system.functions[function];
     std::string signature = decl.name + "(";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
       signature += (i ? ", " : "") + std::string(bipc::ir::value_kind_name(kinds[i]));
@@ -209,9 +114,9 @@ Val CodeEvaluator::call(const Instr& in, const Val* args_end) {
   }
   const std::span<const Val> args(args_end - count, count);
   // Variadic calls see their own argument kinds; the IR declares them per call site.
-  call_.arg_kinds = kinds;
-  if (f->variadic && count > kinds.size()) call_.arg_kinds = {};
-  return f->fn(call_, args);
+  call.arg_kinds = kinds;
+  if (f->variadic && count > kinds.size()) call.arg_kinds = {};
+  return f->fn(call, args);
 }
 
 inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
@@ -229,34 +134,18 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
       sp->s = functions_.string_ids[in.index];
       return sp + 1;
     case Op::Load:
-      if (in.scope == Scope::Clock) {
-        *sp =
-            make_float(clock_value(frame.clocks[in.index], frame.clock_units[in.index], frame.now));
-      } else {
-        *sp = *slot(in, frame);
-      }
+      *sp = code_ops::load(in.scope, in.index, in.arg, frame);
       return sp + 1;
     case Op::Store:
       --sp;
-      if (in.scope == Scope::Clock) {
-        ClockState& clock = frame.clocks[in.index];
-        clock.value_at = sp->f;
-        clock.since = frame.now;
-      } else {
-        *slot(in, frame) = *sp;
-      }
+      code_ops::store(in.scope, in.index, in.arg, frame, *sp);
       return sp;
-    case Op::StoreRate: {
+    case Op::StoreRate:
       --sp;
-      ClockState& clock = frame.clocks[in.index];
-      clock.value_at = clock_value(clock, frame.clock_units[in.index], frame.now);
-      clock.since = frame.now;
-      clock.rate = sp->f;
+      code_ops::store_rate(in.index, frame, *sp);
       return sp;
-    }
     case Op::Neg:
-      sp[-1] =
-          in.kind == ValueKind::Float ? make_float(-sp[-1].f) : make_int(wrap_sub(0, sp[-1].i));
+      sp[-1] = code_ops::negate(in.kind, sp[-1]);
       return sp;
     case Op::Not:
       sp[-1] = make_bool(!sp[-1].b);
@@ -288,7 +177,7 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
       sp[-1] = make_float(static_cast<double>(sp[-1].i));
       return sp;
     case Op::Call: {
-      const Val result = call(in, sp);
+      const Val result = code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp);
       sp -= in.arg;
       if (system_.functions[in.index].result) *sp++ = result;
       return sp;

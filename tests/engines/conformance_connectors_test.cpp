@@ -17,7 +17,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformanceConnectors : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformanceConnectors, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceConnectors, AllModels, EngineNames);
 
 TYPED_TEST(ConformanceConnectors, R32_broadcast) {
   this->check_runs("running/broadcast", "MyCompoundType()", this->options(), [](const auto& run) {

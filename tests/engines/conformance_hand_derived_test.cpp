@@ -21,7 +21,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformanceHandDerived : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformanceHandDerived, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceHandDerived, AllModels, EngineNames);
 
 /// Random run of a counter atom: `steps` internal-port steps, then a deadlock.
 void expect_internal_counting(const ConformanceRun& run, std::uint64_t steps) {

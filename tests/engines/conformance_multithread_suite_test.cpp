@@ -13,7 +13,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformanceMultithreadSuite : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformanceMultithreadSuite, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceMultithreadSuite, AllModels, EngineNames);
 
 TYPED_TEST(ConformanceMultithreadSuite, M02_priority_rules_cycle5) {
   this->check_silent_error("running_multithread_extra/priority_rules_cycle5", "Level1()",

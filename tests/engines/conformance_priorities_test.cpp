@@ -15,7 +15,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformancePriorities : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformancePriorities, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformancePriorities, AllModels, EngineNames);
 
 /// The checks shared by R38 and R39.
 void expect_priority_rules(const ConformanceRun& run) {

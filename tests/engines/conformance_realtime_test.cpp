@@ -22,7 +22,7 @@ class ConformanceRealTime : public ConformanceFixture<Engine> {
     return options;
   }
 };
-TYPED_TEST_SUITE(ConformanceRealTime, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceRealTime, AllModels, EngineNames);
 
 /// Wall-clock runs are costly: one seed each.
 constexpr std::uint64_t kOneSeed = 1;

@@ -15,7 +15,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformanceStructure : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformanceStructure, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceStructure, AllModels, EngineNames);
 
 TYPED_TEST(ConformanceStructure, R18_double_compound) {
   this->check_runs("running/double_compound", "System()", this->options(), [](const auto& run) {

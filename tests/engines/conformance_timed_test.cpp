@@ -16,7 +16,7 @@ using engines::kRunOk;
 
 template <class Engine>
 class ConformanceTimed : public ConformanceFixture<Engine> {};
-TYPED_TEST_SUITE(ConformanceTimed, AllEngines, EngineNames);
+TYPED_TEST_SUITE(ConformanceTimed, AllModels, EngineNames);
 
 // The tempcontrol extern's row layout, pinned by a literal (the R02 table is built with it).
 TEST(ConformanceExterns, TempcontrolRowWidths) {

@@ -217,11 +217,17 @@ std::optional<bipc::ir::System> load_conformance_model(const std::string& model,
 
 ConformanceRun run_conformance(const bipc::ir::System& system,
                                const engines::SimulateOptions& options) {
+  return run_conformance(engines::InterpretedModel(system), options);
+}
+
+ConformanceRun run_conformance(const engines::Model& model,
+                               const engines::SimulateOptions& options) {
   engines::Externs externs = engines::Externs::with_builtins();
   register_conformance_externs(externs);
   std::ostringstream out;
   ConformanceRun run;
-  run.result = engines::simulate(system, options, externs, out);
+  engines::Simulator simulator(model, options, externs);
+  run.result = simulator.run(options.run_index, engines::RunStreams{out, out});
   run.text = std::move(out).str();
   run.lines = split_lines(run.text);
   return run;

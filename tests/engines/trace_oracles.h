@@ -14,6 +14,8 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/engines.h"
+#include "engines/model.h"
+#include "tests/engines/generated_conformance.h"
 
 namespace smcbip::tests {
 
@@ -86,17 +88,36 @@ std::string error_line_pattern(int code);
 // ---------------------------------------------------------------------------------------------
 // Running conformance models.
 
-/// The engine variants of the typed suites.
+/// The engine variants of the typed suites: the engine, and whether the model runs as the C++
+/// that bipc gen generated (compiled into the tests) instead of interpreted.
 struct Reference {
   static constexpr engines::EngineKind kind = engines::EngineKind::Reference;
+  static constexpr bool generated = false;
 };
 struct Optimised {
   static constexpr engines::EngineKind kind = engines::EngineKind::Optimised;
+  static constexpr bool generated = false;
 };
 struct Multithread {
   static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
+  static constexpr bool generated = false;
+};
+struct GeneratedReference {
+  static constexpr engines::EngineKind kind = engines::EngineKind::Reference;
+  static constexpr bool generated = true;
+};
+struct GeneratedOptimised {
+  static constexpr engines::EngineKind kind = engines::EngineKind::Optimised;
+  static constexpr bool generated = true;
+};
+struct GeneratedMultithread {
+  static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
+  static constexpr bool generated = true;
 };
 using AllEngines = ::testing::Types<Reference, Optimised, Multithread>;
+/// The conformance suites' variants: every engine on the interpreted and the generated model.
+using AllModels = ::testing::Types<Reference, Optimised, Multithread, GeneratedReference,
+                                   GeneratedOptimised, GeneratedMultithread>;
 
 /// The engine's name in test instance names.
 inline std::string engine_label(engines::EngineKind engine) {
@@ -115,7 +136,7 @@ inline std::string engine_label(engines::EngineKind engine) {
 struct EngineNames {
   template <class Engine>
   static std::string GetName(int /*index*/) {
-    return engine_label(Engine::kind);
+    return (Engine::generated ? "Generated" : "") + engine_label(Engine::kind);
   }
 };
 
@@ -141,6 +162,9 @@ std::optional<bipc::ir::System> load_conformance_model(const std::string& model,
 /// Runs `system` once with the builtins and the conformance externs, capturing the trace.
 ConformanceRun run_conformance(const bipc::ir::System& system,
                                const engines::SimulateOptions& options);
+/// The same with any model (e.g. a CompiledModel of `system`).
+ConformanceRun run_conformance(const engines::Model& model,
+                               const engines::SimulateOptions& options);
 
 /// Adds a failure unless the run ended with `code` and printed the error line of that code.
 void expect_run_error(const ConformanceRun& run, int code);
@@ -152,6 +176,10 @@ class ConformanceFixture : public ::testing::Test {
   void SetUp() override {
     if (!std::filesystem::exists(conformance_dir())) {
       GTEST_SKIP() << "shared conformance data not found (set SMCBIP_SHARED_DATA)";
+    }
+    if (Engine::generated && generated_conformance_models().empty()) {
+      GTEST_SKIP() << "no conformance model was generated: the shared data were absent when "
+                      "the tests were built";
     }
   }
 
@@ -169,10 +197,20 @@ class ConformanceFixture : public ::testing::Test {
                   engines::SimulateOptions run_options, std::uint64_t seeds, Check check) {
     const std::optional<bipc::ir::System> system = load_conformance_model(model, root);
     if (!system) return;
+    std::optional<engines::CompiledModel> compiled;
+    if (Engine::generated) {
+      const engines::CompiledModel::CodeFactory factory = find_generated_conformance(model, root);
+      ASSERT_NE(factory, nullptr) << model << " with root " << root << " was not generated "
+                                  << "(tests/engines/generate_conformance.sh)";
+      compiled.emplace(*system, factory);
+    }
+    const engines::InterpretedModel interpreted(*system);
+    const engines::Model& run_model =
+        compiled ? static_cast<const engines::Model&>(*compiled) : interpreted;
     for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
       SCOPED_TRACE(model + " " + root + " with seed " + std::to_string(seed));
       run_options.seed = seed;
-      check(run_conformance(*system, run_options));
+      check(run_conformance(run_model, run_options));
       if (::testing::Test::HasFailure()) return;
     }
   }
