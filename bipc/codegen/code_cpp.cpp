@@ -11,6 +11,8 @@
 #include <sstream>
 #include <vector>
 
+#include "bipc/ir/ir_json.h"
+
 namespace smcbip::bipc::codegen {
 
 namespace {
@@ -18,78 +20,11 @@ namespace {
 using ir::Instr;
 using ir::Op;
 
-const char* op_name(Op op) {
-  switch (op) {
-    case Op::Add:
-      return "Add";
-    case Op::Sub:
-      return "Sub";
-    case Op::Mul:
-      return "Mul";
-    case Op::Div:
-      return "Div";
-    case Op::Mod:
-      return "Mod";
-    case Op::BitAnd:
-      return "BitAnd";
-    case Op::BitOr:
-      return "BitOr";
-    case Op::BitXor:
-      return "BitXor";
-    case Op::Eq:
-      return "Eq";
-    case Op::Ne:
-      return "Ne";
-    case Op::Lt:
-      return "Lt";
-    case Op::Le:
-      return "Le";
-    case Op::Gt:
-      return "Gt";
-    default:
-      return "Ge";
-  }
-}
-
-const char* kind_name(ir::ValueKind kind) {
-  switch (kind) {
-    case ir::ValueKind::Void:
-      return "Void";
-    case ir::ValueKind::Bool:
-      return "Bool";
-    case ir::ValueKind::Int:
-      return "Int";
-    case ir::ValueKind::Float:
-      return "Float";
-    case ir::ValueKind::String:
-      return "String";
-    case ir::ValueKind::Extern:
-      return "Extern";
-  }
-  return "Int";
-}
-
-const char* scope_name(ir::Scope scope) {
-  switch (scope) {
-    case ir::Scope::AtomData:
-      return "AtomData";
-    case ir::Scope::AtomParam:
-      return "AtomParam";
-    case ir::Scope::Clock:
-      return "Clock";
-    case ir::Scope::ConnectorData:
-      return "ConnectorData";
-    case ir::Scope::PortParam:
-      return "PortParam";
-    case ir::Scope::InstanceData:
-      return "InstanceData";
-  }
-  return "AtomData";
-}
-
-bool is_jump(Op op) {
-  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
-         op == Op::JumpIfTrueKeep;
+/// An enumerator of the IR as a constant C++ expression (the statement's comment names it).
+template <class Enum>
+std::string constant(const char* type, Enum value) {
+  return std::string("static_cast<ir::") + type + ">(" +
+         std::to_string(static_cast<unsigned>(value)) + ")";
 }
 
 /// An integer literal valid for every int64 (the most negative one has no literal of its own).
@@ -109,6 +44,7 @@ std::string float_literal(double v) {
 
 /// How many values the instruction leaves minus how many it takes (jumps: on falling through).
 int stack_effect(const ir::System& system, const Instr& in) {
+  if (ir::is_binary(in.op)) return -1;
   switch (in.op) {
     case Op::PushBool:
     case Op::PushInt:
@@ -123,31 +59,11 @@ int stack_effect(const ir::System& system, const Instr& in) {
     case Op::JumpIfFalseKeep:
     case Op::JumpIfTrueKeep:
       return -1;
-    case Op::Add:
-    case Op::Sub:
-    case Op::Mul:
-    case Op::Div:
-    case Op::Mod:
-    case Op::BitAnd:
-    case Op::BitOr:
-    case Op::BitXor:
-    case Op::Eq:
-    case Op::Ne:
-    case Op::Lt:
-    case Op::Le:
-    case Op::Gt:
-    case Op::Ge:
-      return -1;
     case Op::Call:
       return (system.functions.at(in.index).result ? 1 : 0) - static_cast<int>(in.arg);
-    case Op::Neg:
-    case Op::Not:
-    case Op::BitNot:
-    case Op::IntToFloat:
-    case Op::Jump:
+    default:  // Neg, Not, BitNot, IntToFloat, Jump
       return 0;
   }
-  return 0;
 }
 
 /// The stack depth before each instruction (nullopt where none reaches) and at the end.
@@ -174,10 +90,10 @@ Depths depths_of(const ir::System& system, const ir::Code& code) {
     const Instr& in = code.instrs[pc];
     const int depth = *d.before[pc];
     const int after = depth + stack_effect(system, in);
-    if (after < 0 || (in.op != Op::Jump && is_jump(in.op) && depth < 1)) {
+    if (after < 0 || (in.op != Op::Jump && ir::is_jump(in.op) && depth < 1)) {
       throw UntranslatableCode{"stack underflow at instruction " + std::to_string(pc)};
     }
-    if (is_jump(in.op)) {
+    if (ir::is_jump(in.op)) {
       if (in.index <= pc || in.index > n) {
         throw UntranslatableCode{"jump from " + std::to_string(pc) + " to " +
                                  std::to_string(in.index) + " does not go forward"};
@@ -198,10 +114,18 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
   const std::string top = "s[" + std::to_string(d - 1) + "]";
   const std::string below = "s[" + std::to_string(d - 2) + "]";
   const std::string next = "s[" + std::to_string(d) + "]";
-  const std::string kind = std::string("ir::ValueKind::") + kind_name(in.kind);
+  const std::string kind = constant("ValueKind", in.kind);
+  const std::string op = constant("Op", in.op);
   const std::string label = "L" + std::to_string(in.index);
-  const std::string place = std::string("ir::Scope::") + scope_name(in.scope) + ", " +
-                            std::to_string(in.index) + ", " + std::to_string(in.arg);
+  const std::string place =
+      constant("Scope", in.scope) + ", " + std::to_string(in.index) + ", " + std::to_string(in.arg);
+  if (ir::is_comparison(in.op)) {
+    return below + " = se::make_bool(ops::compare(" + op + ", " + kind + ", " + below + ", " + top +
+           ", c.call.strings));";
+  }
+  if (ir::is_binary(in.op)) {
+    return below + " = ops::arithmetic(" + op + ", " + kind + ", " + below + ", " + top + ");";
+  }
   switch (in.op) {
     case Op::PushBool:
       return next + " = se::make_bool(" + (in.imm.b ? "true" : "false") + ");";
@@ -223,24 +147,6 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
       return top + " = se::make_bool(!" + top + ".b);";
     case Op::BitNot:
       return top + " = se::make_int(~" + top + ".i);";
-    case Op::Add:
-    case Op::Sub:
-    case Op::Mul:
-    case Op::Div:
-    case Op::Mod:
-    case Op::BitAnd:
-    case Op::BitOr:
-    case Op::BitXor:
-      return below + " = ops::arithmetic(ir::Op::" + op_name(in.op) + ", " + kind + ", " + below +
-             ", " + top + ");";
-    case Op::Eq:
-    case Op::Ne:
-    case Op::Lt:
-    case Op::Le:
-    case Op::Gt:
-    case Op::Ge:
-      return below + " = se::make_bool(ops::compare(ir::Op::" + op_name(in.op) + ", " + kind +
-             ", " + below + ", " + top + ", c.call.strings));";
     case Op::IntToFloat:
       return top + " = se::make_float(static_cast<double>(" + top + ".i));";
     case Op::Call: {
@@ -256,7 +162,7 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
       return text + " }";
     }
     case Op::Pop:
-      return "// pop";
+      return ";";
     case Op::Jump:
       return "goto " + label + ";";
     case Op::JumpIfFalse:
@@ -264,6 +170,8 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
       return "if (!" + top + ".b) goto " + label + ";";
     case Op::JumpIfTrueKeep:
       return "if (" + top + ".b) goto " + label + ";";
+    default:  // binary operations, above
+      break;
   }
   return "";
 }
@@ -281,7 +189,9 @@ std::string code_function(const ir::System& system, const ir::Code& code, const 
   for (std::size_t pc = 0; pc < n; ++pc) {
     if (depths.targeted[pc]) out << " L" << pc << ":;\n";
     if (!depths.before[pc]) continue;
-    out << "  " << statement(system, code.instrs[pc], *depths.before[pc]) << "\n";
+    const Instr& in = code.instrs[pc];
+    out << "  " << statement(system, in, *depths.before[pc]) << "  // "
+        << ir::instruction_text(in, system) << "\n";
   }
   if (depths.targeted[n]) out << " L" << n << ":;\n";
   if (returns_value) {

@@ -84,6 +84,16 @@ enum class Op : std::uint8_t {
   Pop,              // discards a call result used as a statement
 };
 
+/// Whether the instruction moves the program counter (its `index` is the target).
+inline bool is_jump(Op op) {
+  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
+         op == Op::JumpIfTrueKeep;
+}
+/// Eq..Ge: pops two operands of the instruction's kind, pushes a bool.
+inline bool is_comparison(Op op) { return op >= Op::Eq && op <= Op::Ge; }
+/// Add..Ge: pops two operands, pushes one result.
+inline bool is_binary(Op op) { return op >= Op::Add && op <= Op::Ge; }
+
 struct Instr {
   Op op = Op::PushInt;
   ValueKind kind = ValueKind::Int;

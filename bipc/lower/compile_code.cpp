@@ -28,11 +28,6 @@ ir::Instr access(Op op, ir::Scope scope, ir::Index index, ir::Index arg, ValueKi
   return in;
 }
 
-bool is_jump(Op op) {
-  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
-         op == Op::JumpIfTrueKeep;
-}
-
 /// Turns an integer literal into a float literal, which is what a conversion of it would give.
 void push_float(ir::Instr& in) {
   const double value = static_cast<double>(in.imm.i);
@@ -49,7 +44,7 @@ void insert_conversion(std::vector<ir::Instr>& out, std::size_t begin, std::size
     return;
   }
   for (std::size_t i = at; i < out.size(); ++i) {
-    if (is_jump(out[i].op) && out[i].index >= at) ++out[i].index;
+    if (ir::is_jump(out[i].op) && out[i].index >= at) ++out[i].index;
   }
   out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), make(Op::IntToFloat, ValueKind::Float));
 }

@@ -88,15 +88,18 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
     const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
     if (temporary.empty()) {
       error = "cannot write " + path;
-      for (const auto& [done, final_path] : written) std::filesystem::remove(done, ec);
+      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
       return false;
     }
     written.emplace_back(temporary, path);
   }
-  for (const auto& [temporary, path] : written) {
-    std::filesystem::rename(temporary, path, ec);
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    std::filesystem::rename(written[i].first, written[i].second, ec);
     if (ec) {
-      error = "cannot write " + path + ": " + ec.message();
+      error = "cannot write " + written[i].second + ": " + ec.message();
+      for (std::size_t j = i; j < written.size(); ++j) {
+        std::filesystem::remove(written[j].first, ec);
+      }
       return false;
     }
   }

@@ -12,8 +12,6 @@ using bipc::ir::Op;
 
 namespace {
 
-bool is_comparison(Op op) { return op >= Op::Eq && op <= Op::Ge; }
-
 bool is_clock_load(const Instr& in) {
   return in.op == Op::Load && in.scope == bipc::ir::Scope::Clock;
 }
@@ -51,7 +49,8 @@ std::optional<ClockBounds::Bound> ClockBounds::bound_at(const std::vector<Instr>
     bound.clock = instrs[pc++].index;
     bound.clock_on_left = false;
   }
-  if (!literal || pc >= instrs.size() || !is_comparison(instrs[pc].op)) return std::nullopt;
+  if (!literal || pc >= instrs.size() || !bipc::ir::is_comparison(instrs[pc].op))
+    return std::nullopt;
   const Instr& compare = instrs[pc++];
   bound.op = compare.op;
   // holds_when reads a plain operand by the comparison's kind (its as_double).
@@ -59,15 +58,8 @@ std::optional<ClockBounds::Bound> ClockBounds::bound_at(const std::vector<Instr>
   if (std::fabs(bound.literal) < 0x1p20 && bound.literal == std::floor(bound.literal)) {
     bound.small_literal = static_cast<std::int64_t>(bound.literal);
   }
-  bound.clock_op = bound.op;
-  if (!bound.clock_on_left) {
-    // `L op x` is `x op' L` with the comparison turned around.
-    bound.clock_op = bound.op == Op::Lt   ? Op::Gt
-                     : bound.op == Op::Le ? Op::Ge
-                     : bound.op == Op::Gt ? Op::Lt
-                     : bound.op == Op::Ge ? Op::Le
-                                          : bound.op;
-  }
+  // `L op x` is `x op' L` with the comparison turned around.
+  bound.clock_op = bound.clock_on_left ? bound.op : detail::turned_around(bound.op);
   return bound;
 }
 
@@ -102,25 +94,26 @@ inline bool ClockBounds::narrow_exactly(const Bound& bound, const ClockState& cl
   const TimeValue reach = *bound.small_literal * unit;
   if (elapsed < 0 || elapsed >= kExact || reach <= -kExact || reach >= kExact) return false;
   const TimeValue r = clock.since + reach;
+  Interval holds = Interval::all();
   switch (bound.clock_op) {
     case Op::Lt:
-      narrow(dates, {kMinusInfinity, r, false, true});
-      return true;
     case Op::Le:
-      narrow(dates, {kMinusInfinity, r, false, false});
-      return true;
+      holds.right = r;
+      holds.right_open = bound.clock_op == Op::Lt;
+      break;
     case Op::Gt:
-      narrow(dates, {r, kPlusInfinity, true, false});
-      return true;
     case Op::Ge:
-      narrow(dates, {r, kPlusInfinity, false, false});
-      return true;
+      holds.left = r;
+      holds.left_open = bound.clock_op == Op::Gt;
+      break;
     case Op::Eq:
-      narrow(dates, Interval::point(r));
-      return true;
+      holds = Interval::point(r);
+      break;
     default:
       return false;
   }
+  narrow(dates, holds);
+  return true;
 }
 
 Interval ClockBounds::holds_when(const Frame& frame) const {

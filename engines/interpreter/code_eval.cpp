@@ -20,11 +20,6 @@ using code_ops::compare;
 
 Val* slot(const Instr& in, const Frame& f) { return code_ops::slot(in.scope, in.index, in.arg, f); }
 
-bool is_jump(Op op) {
-  return op == Op::Jump || op == Op::JumpIfFalse || op == Op::JumpIfFalseKeep ||
-         op == Op::JumpIfTrueKeep;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Time sets. A clock-dependent value is linear in the delay d (ns) from now: a + b*d.
 
@@ -202,7 +197,7 @@ std::size_t CodeEvaluator::run(const bipc::ir::Code& code, const Frame& frame) {
   const Instr* const first = code.instrs.data();
   const Instr* const last = first + code.instrs.size();
   for (const Instr* in = first; in != last; ++in) {
-    if (!is_jump(in->op)) {
+    if (!bipc::ir::is_jump(in->op)) {
       sp = apply(*in, frame, sp);
       continue;
     }
@@ -322,8 +317,8 @@ inline bool CodeEvaluator::linear_step(const Instr& in, TimedItem*& sp) {
 TimedItem* CodeEvaluator::plain_step(const Instr& in, const Frame& frame, TimedItem* sp) {
   // Runs the instruction on the plain values through a one-instruction program.
   const std::size_t arity =
-      in.op == Op::Call                       ? in.arg
-      : (in.op >= Op::Add && in.op <= Op::Ge) ? 2
+      in.op == Op::Call            ? in.arg
+      : bipc::ir::is_binary(in.op) ? 2
       : (in.op == Op::Neg || in.op == Op::Not || in.op == Op::BitNot || in.op == Op::IntToFloat ||
          in.op == Op::Pop || in.op == Op::Store || in.op == Op::StoreRate)
           ? 1
@@ -362,7 +357,7 @@ Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& fram
     if (pc == instrs.size()) break;
     const Instr& in = instrs[pc];
     if (timed_step(in, frame, sp, join)) continue;
-    if (!is_jump(in.op)) {
+    if (!bipc::ir::is_jump(in.op)) {
       sp = plain_step(in, frame, sp);
       continue;
     }

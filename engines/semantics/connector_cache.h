@@ -61,12 +61,14 @@ class ConnectorCache {
     for (bipc::ir::Index atom : touched_list_) touched_[atom] = 0;
     touched_list_.clear();
   }
-  /// Marks a connector whose values depend on its atoms' offers only (no guard, no `up`, no
-  /// sub-connector), that no connector binds and whose compound has no priority rules: no other
-  /// connector's values depend on it or it on them, so it may be computed apart from the
+  /// Tells that the connector's values depend on its atoms' offers alone (no guard, no `up`, no
+  /// sub-connector). If no connector binds it and its compound has no priority rules, no other
+  /// connector's values depend on it or it on them: it becomes direct, computed apart from the
   /// compound order, and a begin() that is not full lists it in direct_work() instead of
   /// marking it stale.
-  void set_direct(bipc::ir::Index connector) { direct_[connector] = 1; }
+  void note_offers_only(bipc::ir::Index connector) {
+    if (parents_[connector].empty() && !ruled_[connector]) direct_[connector] = 1;
+  }
   /// After a begin() that was not full: the direct connectors whose values must be computed
   /// (the others go through next_compound). Valid until end().
   const std::vector<bipc::ir::Index>& direct_work() const { return direct_work_; }

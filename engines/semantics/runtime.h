@@ -278,8 +278,8 @@ class Runtime {
   void compute_single_offer_interactions(Index connector);
   /// Fills single_atom_ports_.
   void index_single_atom_ports();
-  /// Tells the cache which connectors are direct (ConnectorCache::set_direct); after
-  /// index_single_atom_ports and index_required_offers.
+  /// Tells the cache which connectors have values from their offers alone
+  /// (ConnectorCache::note_offers_only); after index_single_atom_ports.
   void index_direct_connectors();
   /// A new value of the shape, with no port chosen yet.
   [[gnu::always_inline]] inline Index start_value(const ValueShape& shape);

@@ -65,23 +65,14 @@ void Runtime::index_single_atom_ports() {
 
 void Runtime::index_direct_connectors() {
   if (!options_.incremental) return;
-  std::vector<std::uint8_t> bound(system_.connectors.size(), 0);
-  for (const bipc::ir::ConnectorInstance& connector : system_.connectors) {
-    for (const auto& refs : connector.bound) {
-      for (const bipc::ir::PortRef& ref : refs) {
-        if (ref.kind == bipc::ir::PortRef::Kind::Connector) bound[ref.instance] = 1;
-      }
-    }
-  }
   for (Index k = 0; k < system_.connectors.size(); ++k) {
-    const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
-    bool direct = !single_atom_ports_[k].empty() && !bound[k] && !has_sub_connectors_[k] &&
-                  layout_.rules[connector.parent].empty();
+    // Single atom ports only: no sub-connector.
+    bool offers_only = !single_atom_ports_[k].empty();
     for (const bipc::ir::InteractionCode& code :
-         system_.connector_types[connector.type].interactions) {
-      direct = direct && code.guard.empty() && code.up.empty();
+         system_.connector_types[system_.connectors[k].type].interactions) {
+      offers_only = offers_only && code.guard.empty() && code.up.empty();
     }
-    if (direct) cache_.set_direct(k);
+    if (offers_only) cache_.note_offers_only(k);
   }
 }
 

@@ -213,26 +213,13 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
 
 void Runtime::recompute_priorities(Index k) {
   cache_.clear_time_dependent(k);
-  if (connector_values_[k].empty()) {
-    cache_.set_urgent(k, false);
-    if (!cache_.stale(k)) cache_.priorities_changed(k);
-    count_connector_items(k);
-    return;
-  }
+  const IndexList& values = connector_values_[k];
+  for (Index v : values) values_[v].after = values_[v].raw;
   // A lone value without priority rules has nothing above it: it stays as it is.
-  const bool alone = connector_values_[k].size() == 1 && !cache_.ruled(k);
-  if (alone) {
-    InteractionValue& value = values_[*connector_values_[k].begin()];
-    value.after = value.raw;
-    cache_.set_urgent(k, value.raw.urgency != Urgency::Lazy && !value.after.interval.empty());
-    if (!cache_.stale(k)) cache_.priorities_changed(k);
-    count_connector_items(k);
-    return;
-  }
-  for (Index v : connector_values_[k]) values_[v].after = values_[v].raw;
+  const bool alone = values.size() == 1 && !cache_.ruled(k);
   bool urgent = false;
-  for (Index v : connector_values_[k]) {
-    apply_priorities(values_[v], k);
+  for (Index v : values) {
+    if (!alone) apply_priorities(values_[v], k);
     urgent =
         urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
   }

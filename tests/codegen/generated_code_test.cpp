@@ -73,8 +73,8 @@ TEST_P(GeneratedCode, ItsOwnCodeRuns) {
   const std::optional<bipc::ir::System> system =
       load_model(std::string(SMCBIP_SOURCE_DIR) + "/" + generated.file, generated.root);
   ASSERT_TRUE(system);
-  // The generated factory's code, counted; an interpreter behind it would not be counted here
-  // but would still run: so the generated code also refuses code of another numbering.
+  // The generated code answers only the Code of its own numbering: anything else is a fault,
+  // not a silent fall back on an interpreter.
   int calls = 0;
   engines::StringPool strings;
   std::ostringstream out;

@@ -90,30 +90,17 @@ std::string error_line_pattern(int code);
 
 /// The engine variants of the typed suites: the engine, and whether the model runs as the C++
 /// that bipc gen generated (compiled into the tests) instead of interpreted.
-struct Reference {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Reference;
-  static constexpr bool generated = false;
+template <engines::EngineKind Kind, bool Generated>
+struct Variant {
+  static constexpr engines::EngineKind kind = Kind;
+  static constexpr bool generated = Generated;
 };
-struct Optimised {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Optimised;
-  static constexpr bool generated = false;
-};
-struct Multithread {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
-  static constexpr bool generated = false;
-};
-struct GeneratedReference {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Reference;
-  static constexpr bool generated = true;
-};
-struct GeneratedOptimised {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Optimised;
-  static constexpr bool generated = true;
-};
-struct GeneratedMultithread {
-  static constexpr engines::EngineKind kind = engines::EngineKind::Multithread;
-  static constexpr bool generated = true;
-};
+using Reference = Variant<engines::EngineKind::Reference, false>;
+using Optimised = Variant<engines::EngineKind::Optimised, false>;
+using Multithread = Variant<engines::EngineKind::Multithread, false>;
+using GeneratedReference = Variant<engines::EngineKind::Reference, true>;
+using GeneratedOptimised = Variant<engines::EngineKind::Optimised, true>;
+using GeneratedMultithread = Variant<engines::EngineKind::Multithread, true>;
 using AllEngines = ::testing::Types<Reference, Optimised, Multithread>;
 /// The conformance suites' variants: every engine on the interpreted and the generated model.
 using AllModels = ::testing::Types<Reference, Optimised, Multithread, GeneratedReference,

@@ -14,6 +14,15 @@ using bipc::ir::Op;
 
 inline Interval relative_set(bool holds) { return holds ? Interval::all() : Interval::none(); }
 
+/// The comparison with its sides swapped (`a < b` is `b > a`).
+inline Op turned_around(Op op) {
+  return op == Op::Lt   ? Op::Gt
+         : op == Op::Le ? Op::Ge
+         : op == Op::Gt ? Op::Lt
+         : op == Op::Ge ? Op::Le
+                        : op;
+}
+
 /// {d | a + b*d op c}, on integer nanoseconds.
 inline Interval solve(Op op, double a, double b, double c) {
   if (b == 0.0) {
@@ -26,14 +35,8 @@ inline Interval solve(Op op, double a, double b, double c) {
     return relative_set(holds);
   }
   const double x = (c - a) / b;
-  if (b < 0.0) {
-    // Dividing by a negative slope turns the comparison around.
-    op = op == Op::Lt   ? Op::Gt
-         : op == Op::Le ? Op::Ge
-         : op == Op::Gt ? Op::Lt
-         : op == Op::Ge ? Op::Le
-                        : op;
-  }
+  // Dividing by a negative slope turns the comparison around.
+  if (b < 0.0) op = turned_around(op);
   const double limit = 9.0e18;
   if (x > limit) return op == Op::Lt || op == Op::Le ? Interval::all() : Interval::none();
   if (x < -limit) return op == Op::Gt || op == Op::Ge ? Interval::all() : Interval::none();
