@@ -110,4 +110,10 @@ class Simulator {
 RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
                    const Externs& externs, std::ostream& out, std::istream* input = nullptr);
 
+/// `smcbip simulate`'s run of a model once loaded: the trace on stdout, the model's output on
+/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `tool`; returns
+/// the exit code (the RunCode).
+int run_simulation(const Model& model, const SimulateOptions& options, const Externs& externs,
+                   const std::string& tool);
+
 }  // namespace smcbip::engines

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <string>
 
 #include "engines/engines.h"
 
@@ -53,6 +56,30 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
           CLI::CheckedTransformer(std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
                                                                      {"jsonl", TraceFormat::Jsonl}},
                                   CLI::ignore_case));
+}
+
+/// The main program of a generated model: parses the options of `smcbip simulate` (no model
+/// file: the model is compiled in) and runs `model` once as `smcbip simulate` does; returns the
+/// exit code.
+inline int simulate_main(int argc, char** argv, const Model& model, const Externs& externs,
+                         const std::string& name) {
+  try {
+    CLI::App app{name + ": the BIP model " + name + ", compiled by bipc gen"};
+    SimulateOptions options;
+    register_simulate_options(app, options);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::cerr << name << ": error: " << e.what() << "\n";
+      return kUsageError;
+    }
+    return run_simulation(model, options, externs, name);
+  } catch (const std::exception& e) {
+    std::cerr << name << ": internal error: " << e.what() << "\n";
+    return kInternalError;
+  }
 }
 
 }  // namespace smcbip::engines

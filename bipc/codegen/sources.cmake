@@ -1,4 +1,5 @@
 # C++ generation from the IR (bipc gen).
 list(APPEND BIPC_SOURCES
   codegen/code_cpp.cpp
-  codegen/generate_cpp.cpp)
+  codegen/generate_cpp.cpp
+  codegen/generate_project.cpp)

@@ -40,16 +40,42 @@ std::string read_source(const fs::path& path, const std::string& name) {
   return contents.str();
 }
 
+/// Every source location under `data` set to null (see model_hash.h).
+void drop_locations(nlohmann::json& data) {
+  if (data.is_array()) {
+    for (nlohmann::json& item : data) drop_locations(item);
+    return;
+  }
+  if (!data.is_object()) return;
+  for (auto& [key, value] : data.items()) {
+    if (key == "loc") {
+      value = nullptr;
+    } else {
+      drop_locations(value);
+    }
+  }
+}
+
+std::vector<std::uint8_t> normalised_bytes(const System& system) {
+  nlohmann::json data = to_data(system);
+  drop_locations(data);
+  for (nlohmann::json& source : data["cpp_sources"]) {
+    source = fs::path(source.get<std::string>()).filename().string();
+  }
+  data["cpp_include_dirs"] = nlohmann::json::array();
+  return nlohmann::json::to_cbor(data);
+}
+
 }  // namespace
 
 std::string model_hash(const System& system, const ExternSources& extern_sources) {
   detail::Sha256 sha;
-  sha.update(to_bytes(system));
-  for (const auto& [name, contents] : extern_sources) {
-    update_length(sha, name.size());
-    sha.update(name);
-    update_length(sha, contents.size());
-    sha.update(contents);
+  sha.update(normalised_bytes(system));
+  for (const ExternSource& source : extern_sources) {
+    update_length(sha, source.name.size());
+    sha.update(source.name);
+    update_length(sha, source.contents.size());
+    sha.update(source.contents);
   }
   return sha.hex_digest();
 }
@@ -57,11 +83,11 @@ std::string model_hash(const System& system, const ExternSources& extern_sources
 ExternSources extern_sources_of(const System& system, const std::vector<std::string>& search_dirs) {
   ExternSources sources;
   for (const std::string& source : system.cpp_sources) {
-    sources.emplace_back(source, read_source(source, source));
+    sources.push_back({fs::path(source).filename().string(), source, read_source(source, source)});
   }
   for (const std::string& header : system.cpp_includes) {
     if (fs::path(header).is_absolute()) {
-      sources.emplace_back(header, read_source(header, header));
+      sources.push_back({header, header, read_source(header, header)});
       continue;
     }
     std::vector<std::string> dirs = system.cpp_include_dirs;
@@ -69,7 +95,7 @@ ExternSources extern_sources_of(const System& system, const std::vector<std::str
     for (const std::string& dir : dirs) {
       const fs::path candidate = fs::path(dir) / header;
       if (is_file(candidate)) {
-        sources.emplace_back(header, read_source(candidate, header));
+        sources.push_back({header, candidate.string(), read_source(candidate, header)});
         break;
       }
     }

@@ -2,28 +2,35 @@
 #pragma once
 
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "bipc/ir/ir.h"
 
 namespace smcbip::bipc::ir {
 
-/// Extern C++ files of a model as (name, contents) pairs.
-using ExternSources = std::vector<std::pair<std::string, std::string>>;
+/// One extern C++ file of a model.
+struct ExternSource {
+  std::string name;      // what the hash covers: a source's file name, a header as written
+  std::string path;      // where it was read
+  std::string contents;  // its bytes
+};
+using ExternSources = std::vector<ExternSource>;
 
 /// The lowercase hex SHA-256 (64 digits) of these bytes, in this order:
 ///
-///   to_bytes(system)                      the IR as CBOR (ir_data.h), not length-prefixed
-///   for each (name, contents) in extern_sources, in the order given:
+///   to_cbor(normalised(to_data(system)))  the IR as CBOR (ir_data.h), not length-prefixed
+///   for each source in extern_sources, in the order given:
 ///     u64le(name.size())      name bytes
 ///     u64le(contents.size())  contents bytes
 ///
-/// where u64le(n) is n as 8 bytes, least significant first. The CBOR is one data item with
+/// where u64le(n) is n as 8 bytes, least significant first, and normalised() drops what only
+/// says where the model is stored or written: every source location ("loc") becomes null,
+/// `cpp_sources` keep their file names alone and `cpp_include_dirs` is emptied. So a model
+/// keeps its hash when its files move or gain comments, and changes it with anything that
+/// changes what it does or the bytes of its extern code. The CBOR is one data item with
 /// definite lengths, so it ends where its own header says; every later field is
 /// length-prefixed, so no two different inputs give the same byte string (moving a byte from
-/// one name or file into the next changes a length). The same System and sources always give
-/// the same hash.
+/// one name or file into the next changes a length). Sources' paths are not hashed.
 std::string model_hash(const System& system, const ExternSources& extern_sources);
 
 /// An extern source named by the model that cannot be read.
@@ -33,9 +40,10 @@ struct ExternSourceError {
 };
 
 /// The extern C++ files of `system`, read from disk, for model_hash. In this order:
-///  - each of `cpp_sources` (`@cpp(src=...)`), named and read as the IR holds it: the front end
+///  - each of `cpp_sources` (`@cpp(src=...)`), read from the path the IR holds (the front end
 ///    has already resolved a relative name against the folder of the package naming it, so a
-///    relative path here is relative to the current directory, as it was for the front end;
+///    relative path here is relative to the current directory, as it was for the front end)
+///    and named by its file name;
 ///  - each of `cpp_includes` (`@cpp(include=...)`), named as written, read from the first of
 ///    `cpp_include_dirs` (the naming packages' folders), then of `search_dirs` (the -I folders,
 ///    as the front end searches packages), that holds it; an absolute name is read as is.

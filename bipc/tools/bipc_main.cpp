@@ -12,9 +12,11 @@
 #include "bipc/bipc.h"
 #include "bipc/codegen/code_cpp.h"
 #include "bipc/codegen/generate_cpp.h"
+#include "bipc/codegen/generate_project.h"
 #include "bipc/ir/ir_dot.h"
 #include "bipc/ir/ir_json.h"
 #include "bipc/ir/ir_text.h"
+#include "bipc/ir/model_hash.h"
 #include "bipc/options.h"
 #include "bipc/output_file.h"
 
@@ -106,18 +108,47 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
   return true;
 }
 
+/// The extern C++ files of `system`, or nullopt with the error printed.
+std::optional<ir::ExternSources> read_extern_sources(const ir::System& system,
+                                                     const FrontendOptions& options) {
+  try {
+    return ir::extern_sources_of(system, options.include_dirs);
+  } catch (const ir::ExternSourceError& e) {
+    std::cerr << "bipc: error: extern source " << e.path << ": " << e.message << "\n";
+    return std::nullopt;
+  }
+}
+
+int run_hash(const FrontendOptions& options) {
+  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  if (!report(result) || !result.system) return kInputError;
+  const std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
+  if (!sources) return kInputError;
+  std::cout << ir::model_hash(*result.system, *sources) << "\n";
+  return kOk;
+}
+
 int run_gen(const FrontendOptions& options, const std::string& output,
-            const codegen::GenerateOptions& gen) {
+            codegen::ProjectOptions project) {
   std::string error;
-  if (!codegen::valid_namespace(gen.name_space, error)) {
+  if (!codegen::valid_namespace(project.code.name_space, error)) {
     std::cerr << "bipc: error: --namespace: " << error << "\n";
     return kInputError;
   }
   FrontendResult result = run_frontend(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
+  std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
+  if (!sources) return kInputError;
+  project.extern_sources = std::move(*sources);
+  project.model_file = options.file;
+  project.root = options.root.empty() ? result.system->root_type : options.root;
+  project.smcbip_version = SMCBIP_VERSION_TEXT;
   std::vector<codegen::GeneratedFile> files;
   try {
-    files = codegen::generate_cpp(*result.system, gen);
+    files = codegen::generate_project(*result.system, project);
+  } catch (const codegen::ExternSourceClash& clash) {
+    std::cerr << "bipc: error: " << clash.message << "\n";
+    return kInputError;
   } catch (const codegen::UntranslatableCode& untranslatable) {
     std::cerr << "bipc: internal error: " << untranslatable.message << "\n";
     return kInternalError;
@@ -154,12 +185,21 @@ int run(int argc, char** argv) {
 
   FrontendOptions gen_options;
   std::string gen_output;
-  codegen::GenerateOptions gen;
-  CLI::App* gen_cmd = app.add_subcommand("gen", "generate the C++ of a root instantiation");
+  codegen::ProjectOptions gen;
+  bool no_main = false;
+  CLI::App* gen_cmd = app.add_subcommand("gen", "generate the C++ project of a root instantiation");
   register_frontend_options(*gen_cmd, gen_options);
   gen_cmd->add_option("-o,--output", gen_output, "output folder (created if needed)")->required();
-  gen_cmd->add_option("--namespace", gen.name_space, "C++ namespace of the generated code")
+  gen_cmd->add_option("--namespace", gen.code.name_space, "C++ namespace of the generated code")
       ->capture_default_str();
+  gen_cmd->add_flag("--no-main", no_main,
+                    "a library for a host program (no executable taking smcbip simulate's "
+                    "options)");
+
+  FrontendOptions hash_options;
+  CLI::App* hash = app.add_subcommand(
+      "hash", "print the model's identity: SHA-256 of its normalised IR and extern sources");
+  register_frontend_options(*hash, hash_options);
 
   try {
     app.parse(argc, argv);
@@ -170,7 +210,11 @@ int run(int argc, char** argv) {
   }
   if (check->parsed()) return run_check(check_options);
   if (dot->parsed()) return run_dot(dot_options, dot_output);
-  if (gen_cmd->parsed()) return run_gen(gen_options, gen_output, gen);
+  if (gen_cmd->parsed()) {
+    gen.main = !no_main;
+    return run_gen(gen_options, gen_output, gen);
+  }
+  if (hash->parsed()) return run_hash(hash_options);
   return run_ir(ir_options, ir_output, json);
 }
 

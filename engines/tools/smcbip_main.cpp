@@ -7,38 +7,73 @@
 #include <iostream>
 
 #include "bipc/bipc.h"
+#include "bipc/ir/model_hash.h"
 #include "bipc/options.h"
 #include "engines/engines.h"
 #include "engines/options.h"
+#include "engines/plugin.h"
 
 namespace {
 
 using namespace smcbip;
 
-int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateOptions& options) {
+/// The system of the model file, or nullopt (diagnostics printed, `code` set).
+std::optional<bipc::ir::System> load_system(const bipc::FrontendOptions& frontend, int& code) {
   bipc::FrontendResult result = bipc::run_frontend(frontend, /*need_system=*/true);
   bipc::Diagnostics sorted = result.diags;
   sorted.sort_by_location();
   std::cerr << sorted.format(result.model.files);
-  if (result.diags.has_errors()) return engines::kInputError;
+  code = engines::kInputError;
+  if (result.diags.has_errors()) return std::nullopt;
   if (!result.system) {
     std::cerr << "smcbip: error: no root given and the model has no single top compound; use "
                  "--root\n";
-    return engines::kUsageError;
+    code = engines::kUsageError;
+    return std::nullopt;
   }
-  const engines::Externs externs = engines::Externs::with_builtins();
-  std::ios::sync_with_stdio(false);
-  // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
-  std::ostream& model_output = options.trace == engines::TraceFormat::Jsonl ? std::cerr : std::cout;
-  engines::Simulator simulator(*result.system, options, externs);
-  const engines::RunResult run =
-      simulator.run(options.run_index, engines::RunStreams{std::cout, model_output, &std::cin});
-  std::cout.flush();
-  if (run.code == engines::kInputError || run.code == engines::kInternalError ||
-      run.code == engines::kUsageError) {
-    std::cerr << "smcbip: error: " << run.message << "\n";
+  return std::move(result.system);
+}
+
+/// Runs the compiled model of `plugin_path`; with a model file, only when it is that model.
+int run_compiled(const bipc::FrontendOptions& frontend, const std::string& plugin_path,
+                 const engines::SimulateOptions& options) {
+  engines::Plugin plugin;
+  try {
+    plugin = engines::load_plugin(plugin_path);
+  } catch (const engines::PluginError& e) {
+    std::cerr << "smcbip: error: --compiled: " << e.message << "\n";
+    return engines::kInputError;
   }
-  return run.code;
+  if (!frontend.file.empty()) {
+    int code = 0;
+    const std::optional<bipc::ir::System> system = load_system(frontend, code);
+    if (!system) return code;
+    std::string hash;
+    try {
+      hash = bipc::ir::model_hash(*system,
+                                  bipc::ir::extern_sources_of(*system, frontend.include_dirs));
+    } catch (const bipc::ir::ExternSourceError& e) {
+      std::cerr << "smcbip: error: extern source " << e.path << ": " << e.message << "\n";
+      return engines::kInputError;
+    }
+    if (hash != plugin.entry->model_hash) {
+      std::cerr << "smcbip: error: " << plugin.path << " holds another model (hash "
+                << plugin.entry->model_hash << ") than " << frontend.file << " (hash " << hash
+                << "); generate and build it again\n";
+      return engines::kInputError;
+    }
+  }
+  engines::Externs externs = engines::Externs::with_builtins();
+  plugin.entry->register_externs(externs);
+  return engines::run_simulation(plugin.entry->model(), options, externs, "smcbip");
+}
+
+int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateOptions& options) {
+  int code = 0;
+  const std::optional<bipc::ir::System> system = load_system(frontend, code);
+  if (!system) return code;
+  const engines::InterpretedModel model(*system);
+  return engines::run_simulation(model, options, engines::Externs::with_builtins(), "smcbip");
 }
 
 }  // namespace
@@ -49,17 +84,25 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     bipc::FrontendOptions frontend;
     engines::SimulateOptions options;
+    std::string compiled;
     CLI::App* simulate = app.add_subcommand("simulate", "run a model once and print its trace");
-    bipc::register_frontend_options(*simulate, frontend);
+    bipc::register_frontend_options(*simulate, frontend, /*file_required=*/false);
     engines::register_simulate_options(*simulate, options);
+    simulate->add_option("--compiled", compiled,
+                         "run the model compiled by bipc gen: its plugin, or the folder of its "
+                         "built project (with FILE, only if FILE is that model)");
     try {
       app.parse(argc, argv);
+      if (frontend.file.empty() && compiled.empty()) {
+        throw CLI::RequiredError("FILE (or --compiled)");
+      }
     } catch (const CLI::CallForHelp& e) {
       return app.exit(e);
     } catch (const CLI::ParseError& e) {
       std::cerr << "smcbip: error: " << e.what() << "\n";
       return engines::kUsageError;
     }
+    if (!compiled.empty()) return run_compiled(frontend, compiled, options);
     return run_simulate(frontend, options);
   } catch (const std::exception& e) {
     std::cerr << "smcbip: internal error: " << e.what() << "\n";

@@ -47,25 +47,86 @@ std::string little_endian_u64(std::uint64_t n) {
   return bytes;
 }
 
+/// Every value named "loc" under `data`, at any depth, set to null.
+void null_locations(nlohmann::json& data) {
+  if (data.is_structured()) {
+    for (auto it = data.begin(); it != data.end(); ++it) {
+      if (data.is_object() && it.key() == "loc") {
+        *it = nullptr;
+      } else {
+        null_locations(*it);
+      }
+    }
+  }
+}
+
+/// The IR bytes model_hash covers, spelled out from model_hash.h's description.
+std::string normalised_cbor(const ir::System& s) {
+  nlohmann::json data = ir::to_data(s);
+  null_locations(data);
+  for (auto& source : data["cpp_sources"]) {
+    source = fs::path(source.get<std::string>()).filename().string();
+  }
+  data["cpp_include_dirs"] = nlohmann::json::array();
+  const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(data);
+  return {cbor.begin(), cbor.end()};
+}
+
 TEST(ModelHash, HashesTheDocumentedBytes) {
   const ir::System s = sample_system();
-  const ir::ExternSources sources = {{"src/a.cpp", "int a;\n"}, {"a.hpp", ""}};
-  const std::vector<std::uint8_t> cbor = ir::to_bytes(s);
-  std::string message(cbor.begin(), cbor.end());
-  for (const auto& [name, contents] : sources) {
-    message +=
-        little_endian_u64(name.size()) + name + little_endian_u64(contents.size()) + contents;
+  ASSERT_FALSE(s.atom_types.empty());
+  ASSERT_EQ(s.cpp_sources, std::vector<std::string>{"src/geo.cpp"});
+  const ir::ExternSources sources = {{"a.cpp", "src/a.cpp", "int a;\n"}, {"a.hpp", "a.hpp", ""}};
+  std::string message = normalised_cbor(s);
+  EXPECT_NE(message.find("geo.cpp"), std::string::npos);
+  EXPECT_EQ(message.find("src/geo.cpp"), std::string::npos);
+  for (const ir::ExternSource& source : sources) {
+    message += little_endian_u64(source.name.size()) + source.name +
+               little_endian_u64(source.contents.size()) + source.contents;
   }
   const std::string hash = ir::model_hash(s, sources);
   EXPECT_EQ(hash, sha256_of(message));
   EXPECT_EQ(hash.size(), 64u);
   EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos);
-  EXPECT_EQ(ir::model_hash(s, {}), sha256_of(std::string(cbor.begin(), cbor.end())));
+  EXPECT_EQ(ir::model_hash(s, {}), sha256_of(normalised_cbor(s)));
+}
+
+TEST(ModelHash, IgnoresWhereTheModelIsStoredAndWritten) {
+  const ir::System s = sample_system();
+  const std::string hash = ir::model_hash(s, {});
+
+  ir::System moved = sample_system();
+  moved.cpp_sources = {"/elsewhere/geo.cpp"};
+  moved.cpp_include_dirs = {"/elsewhere", "/usr/include/geo"};
+  EXPECT_EQ(ir::model_hash(moved, {}), hash);
+
+  ir::System shifted = sample_system();  // as if a comment had been added above
+  for (ir::AtomType& type : shifted.atom_types) {
+    for (ir::Transition& t : type.transitions) {
+      t.loc.line += 3;
+      for (ir::Annotation& a : t.annotations) a.loc.line += 3;
+    }
+    for (ir::Annotation& a : type.annotations) a.loc.line += 3;
+  }
+  for (ir::CompoundInstance& c : shifted.compounds) {
+    for (ir::Annotation& a : c.annotations) a.loc.column += 1;
+  }
+  EXPECT_EQ(ir::model_hash(shifted, {}), hash);
+
+  ir::System renamed = sample_system();
+  renamed.cpp_sources = {"src/geo2.cpp"};
+  EXPECT_NE(ir::model_hash(renamed, {}), hash);
+
+  // A source's path is where it was read, not part of the identity.
+  const ir::ExternSources here = {{"a.cpp", "src/a.cpp", "int a;\n"}};
+  const ir::ExternSources there = {{"a.cpp", "/x/a.cpp", "int a;\n"}};
+  EXPECT_EQ(ir::model_hash(s, here), ir::model_hash(s, there));
 }
 
 TEST(ModelHash, ChangesWithTheModelAndItsSources) {
   const ir::System s = sample_system();
-  const ir::ExternSources sources = {{"src/a.cpp", "int a = 1;\n"}, {"a.hpp", "extern int a;\n"}};
+  const ir::ExternSources sources = {{"a.cpp", "src/a.cpp", "int a = 1;\n"},
+                                     {"a.hpp", "a.hpp", "extern int a;\n"}};
   const std::string hash = ir::model_hash(s, sources);
   EXPECT_EQ(ir::model_hash(sample_system(), sources), hash) << "same inputs, same hash";
 
@@ -74,20 +135,20 @@ TEST(ModelHash, ChangesWithTheModelAndItsSources) {
   EXPECT_NE(ir::model_hash(immediate, sources), hash);
 
   ir::ExternSources contents = sources;
-  contents[0].second = "int a = 2;\n";
+  contents[0].contents = "int a = 2;\n";
   EXPECT_NE(ir::model_hash(s, contents), hash);
 
   ir::ExternSources name = sources;
-  name[1].first = "b.hpp";
+  name[1].name = "b.hpp";
   EXPECT_NE(ir::model_hash(s, name), hash);
 
   ir::ExternSources order = {sources[1], sources[0]};
   EXPECT_NE(ir::model_hash(s, order), hash);
 
   // A byte moved across the boundary of a name and its contents changes a length.
-  const ir::ExternSources left = {{"ab", "c"}}, right = {{"a", "bc"}};
+  const ir::ExternSources left = {{"ab", "", "c"}}, right = {{"a", "", "bc"}};
   EXPECT_NE(ir::model_hash(s, left), ir::model_hash(s, right));
-  EXPECT_NE(ir::model_hash(s, {{"", ""}}), ir::model_hash(s, {}));
+  EXPECT_NE(ir::model_hash(s, {{"", "", ""}}), ir::model_hash(s, {}));
 }
 
 /// A fresh directory under the system's temporary folder, removed at the end of the test.
@@ -142,15 +203,32 @@ TEST(ModelHash, ExternSourcesAreReadFromTheModelsFolders) {
 
   const ir::ExternSources sources = ir::extern_sources_of(*system, {(dir.path() / "inc").string()});
   ASSERT_EQ(sources.size(), 3u);  // stdio.h is found nowhere: the toolchain's, left out
-  EXPECT_EQ(fs::path(sources[0].first), (dir.path() / "model" / "impl" / "lamp.cpp"));
-  EXPECT_EQ(sources[0].second, "int lamp() { return 1; }\n");
-  EXPECT_EQ(sources[1], std::make_pair(std::string("lamp.hpp"), std::string("int lamp();\n")));
-  EXPECT_EQ(sources[2], std::make_pair(std::string("extra.hpp"), std::string("#define EXTRA 1\n")));
+  EXPECT_EQ(sources[0].name, "lamp.cpp");
+  EXPECT_EQ(fs::path(sources[0].path), (dir.path() / "model" / "impl" / "lamp.cpp"));
+  EXPECT_EQ(sources[0].contents, "int lamp() { return 1; }\n");
+  EXPECT_EQ(sources[1].name, "lamp.hpp");
+  EXPECT_EQ(fs::path(sources[1].path), dir.path() / "model" / "lamp.hpp");
+  EXPECT_EQ(sources[1].contents, "int lamp();\n");
+  EXPECT_EQ(sources[2].name, "extra.hpp");
+  EXPECT_EQ(sources[2].contents, "#define EXTRA 1\n");
 
   // Without the -I folder, extra.hpp is taken for a toolchain header too.
   EXPECT_EQ(ir::extern_sources_of(*system, {}).size(), 2u);
 
   const std::string hash = ir::model_hash(*system, sources);
+
+  // The same files elsewhere, the model with a comment on top: the same model.
+  const fs::path moved = dir.path() / "moved" / "lamp.bip";
+  write(moved, "// moved\n" + std::string(kExternModel));
+  fs::copy(dir.path() / "model" / "impl", dir.path() / "moved" / "impl");
+  fs::copy(dir.path() / "model" / "lamp.hpp", dir.path() / "moved" / "lamp.hpp");
+  const std::optional<ir::System> moved_system =
+      ir_data_test::load_system(moved, "Top()", {}, &messages);
+  ASSERT_TRUE(moved_system.has_value()) << messages;
+  EXPECT_EQ(ir::model_hash(*moved_system,
+                           ir::extern_sources_of(*moved_system, {(dir.path() / "inc").string()})),
+            hash);
+
   write(dir.path() / "model" / "impl" / "lamp.cpp", "int lamp() { return 2; }\n");
   EXPECT_NE(
       ir::model_hash(*system, ir::extern_sources_of(*system, {(dir.path() / "inc").string()})),

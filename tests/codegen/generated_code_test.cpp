@@ -4,6 +4,8 @@
 
 #include <sstream>
 
+#include "bipc/ir/ir_data.h"
+#include "bipc/ir/model_hash.h"
 #include "engines/engines.h"
 #include "engines/interpreter/code_eval.h"
 #include "generated_models.h"
@@ -66,6 +68,21 @@ TEST_P(GeneratedCode, RunsLikeTheInterpretedModel) {
           << generated.name << ", engine " << static_cast<int>(engine) << ", seed " << seed;
     }
   }
+}
+
+TEST_P(GeneratedCode, EmbedsItsModelAndIdentity) {
+  const GeneratedModel& generated = GetParam();
+  const std::optional<bipc::ir::System> system =
+      load_model(std::string(SMCBIP_SOURCE_DIR) + "/" + generated.file, generated.root);
+  ASSERT_TRUE(system);
+  EXPECT_EQ(bipc::ir::to_data(generated.system()), bipc::ir::to_data(*system));
+  EXPECT_EQ(&generated.model().system(), &generated.system());
+  EXPECT_EQ(generated.hash,
+            bipc::ir::model_hash(*system, bipc::ir::extern_sources_of(*system, {})));
+  // The embedded model alone (no front end) runs as the interpreted one.
+  const engines::InterpretedModel interpreted(*system);
+  EXPECT_EQ(trace_of(generated.model(), EngineKind::Optimised, 7),
+            trace_of(interpreted, EngineKind::Optimised, 7));
 }
 
 TEST_P(GeneratedCode, ItsOwnCodeRuns) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <ostream>
+#include <string_view>
 #include <vector>
 
 #include "engines/model.h"
@@ -13,6 +14,9 @@ struct GeneratedModel {
   const char* file;  // relative to the source folder
   const char* root;
   engines::CompiledModel::CodeFactory make_code;
+  const bipc::ir::System& (*system)();  // the IR embedded in the generated sources
+  const engines::Model& (*model)();     // that IR with the generated code
+  std::string_view hash;                // the generated kModelHash
 };
 
 /// Test names show the model's name.
