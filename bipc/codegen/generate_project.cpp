@@ -154,14 +154,13 @@ std::string extern_binding(const ir::ExternFunction& f) {
   std::ostringstream out;
   out << "  externs.add_raw(" << string_literal(f.name) << ", {" << kinds
       << "}, K::" << kind_name(result) << ",\n"
-      << "                  [](se::CallContext& c, std::span<const se::Val> a) -> se::Val {\n";
+      << "                  []([[maybe_unused]] se::CallContext& c,\n"
+      << "                     [[maybe_unused]] std::span<const se::Val> a) -> se::Val {\n";
   if (result == ir::ValueKind::Void) {
     out << "                    " << f.name << "(" << args << ");\n"
-        << "                    (void)c;\n                    (void)a;\n"
         << "                    return se::make_int(0);\n";
   } else {
-    out << "                    (void)a;\n"
-        << "                    return se::detail::to_val(c, " << cpp_type(result) << "(" << f.name
+    out << "                    return se::detail::to_val(c, " << cpp_type(result) << "(" << f.name
         << "(" << args << ")));\n";
   }
   out << "                  });\n";

@@ -87,6 +87,7 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
   std::vector<std::pair<std::string, std::string>> written;  // temporary, final
   for (const codegen::GeneratedFile& file : files) {
     const std::string path = folder + "/" + file.name;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
     const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
     if (temporary.empty()) {
       error = "cannot write " + path;

@@ -1,0 +1,4 @@
+// The lamp's extern C++ (lamp.bip).
+#pragma once
+
+int brighter(int level);
