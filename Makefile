@@ -7,7 +7,7 @@ FUZZ_SECONDS ?= 600
 ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines tests bench
 
-.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines format clean
+.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated format clean
 
 all: build
 
@@ -56,6 +56,9 @@ bench: build
 # Steps per second of the three schedulers (reports, never fails on timings).
 bench-engines: build
 	bench/engines_steps.sh $(BUILD_DIR)
+
+bench-generated: build
+	bench/generated_steps.sh $(BUILD_DIR)
 
 format:
 	find $(FORMAT_DIRS) \( -name '*.cpp' -o -name '*.h' \) -print0 2>/dev/null \
