@@ -57,6 +57,7 @@ bench: build
 bench-engines: build
 	bench/engines_steps.sh $(BUILD_DIR)
 
+# Steps per second of generated against interpreted models (reports, never fails on timings).
 bench-generated: build
 	bench/generated_steps.sh $(BUILD_DIR)
 
