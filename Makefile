@@ -6,8 +6,13 @@ BUILD_DIR := build
 FUZZ_SECONDS ?= 600
 ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines tests bench
+PREFIX ?= /usr/local
 
+<<<<<<< HEAD
 .PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated format clean
+=======
+.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines format clean
+>>>>>>> package
 
 all: build
 
@@ -17,6 +22,10 @@ deps:
 build: deps
 	cmake --preset $(PRESET)
 	cmake --build --preset $(PRESET)
+
+# The libraries, headers, tools and CMake package (find_package(smcbip)) under $(PREFIX).
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 demo: build
 	$(BUILD_DIR)/bin/bipc check models/rover_watchdog.bip --root $(ROOT)
