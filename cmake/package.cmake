@@ -1,7 +1,23 @@
 # The smcbip package: targets smcbip::bipc, smcbip::engines, smcbip::cli and the tools
 # smcbip::bipc_tool and smcbip::smcbip_tool, for find_package(smcbip) after `cmake --install`
-# (lib/cmake/smcbip) or straight from the build tree (smcbip_DIR=<build dir>).
+# (lib/cmake/smcbip) or straight from the build tree (smcbip_DIR=<build dir>). The stages add
+# their targets to the export set smcbipTargets (libraries through smcbip_installed_library).
 include(CMakePackageConfigHelpers)
+
+# Makes the static library NAME, built from the stage folder of the same name, part of the
+# package as smcbip::NAME, with that folder's headers as include/NAME/... .
+function(smcbip_installed_library name)
+  # Position-independent, so that a model's plugin (a shared module) can link it in. Without
+  # semantic interposition: nothing interposes a static library's functions, and PIC code that
+  # allows it may not inline them (the engines ran a quarter slower on families/work_10.bip).
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  target_compile_options(${name} PRIVATE ${SMCBIP_WARNING_FLAGS} -fno-semantic-interposition)
+  target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  install(TARGETS ${name} EXPORT smcbipTargets)
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${name}
+          FILES_MATCHING PATTERN "*.h" PATTERN tools EXCLUDE)
+endfunction()
 
 set(SMCBIP_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/smcbip)
 
