@@ -18,7 +18,7 @@ bipc="$build_dir/bin/bipc"
 generator="$build_dir/bin/gen_bip_models"
 models_dir="$build_dir/bench-models"
 generated_dir="$build_dir/bench-generated"
-prefix="$build_dir/bench-prefix"
+prefix="$(cd "$build_dir" && pwd)/bench-prefix"
 sizes=(${SIZES:-10 100 1000 10000})
 runs=${RUNS:-3}
 target_seconds=${TARGET_SECONDS:-1.0}
@@ -41,7 +41,7 @@ build_plugin() {
   local model=$1 root=$2 name=$3 dir="$generated_dir/$3"
   "$bipc" gen "$model" --root "$root" -o "$dir" --namespace "bench_$name" --no-main \
     2>"$dir.log" || { cat "$dir.log" >&2; return 1; }
-  cmake -S "$dir" -B "$dir/build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$PWD/$prefix" \
+  cmake -S "$dir" -B "$dir/build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
     -DCMAKE_CXX_COMPILER="$compiler" >>"$dir.log" 2>&1 &&
     cmake --build "$dir/build" --target "bench_${name}_plugin" -j2 >>"$dir.log" 2>&1 ||
     { tail -n 30 "$dir.log" >&2; return 1; }
