@@ -108,12 +108,14 @@ Frame Runtime::atom_frame(Index atom) {
 
 bool Runtime::initialize() {
   cache_.invalidate_all();
-  state_ = RunState{};
+  // Assigned in place: a run started again reuses the buffers.
+  state_.now = 0;
   state_.data.assign(layout_.data_size, make_int(0));
   state_.marking.assign(layout_.place_count, 0);
   state_.clocks.assign(layout_.clock_count, ClockState{});
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
+  for (std::optional<AtomPortValue>& offer : port_values_) offer.reset();
   if (!open_extern_ports()) return false;
   for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {

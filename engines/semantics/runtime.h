@@ -128,7 +128,8 @@ class Runtime {
   Runtime(const Runtime&) = delete;
   Runtime& operator=(const Runtime&) = delete;
 
-  /// Initial actions, internal transitions and checks; false with error() set on failure.
+  /// Initial actions, internal transitions and checks (also to start a run over); false with
+  /// error() set on failure.
   bool initialize();
   /// Computes the enabled items of the current state; false with error() set on failure.
   bool compute_items();
