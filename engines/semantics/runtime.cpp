@@ -593,6 +593,17 @@ bool Runtime::execute(const Item& item, TimeValue at) {
   }
 }
 
+bool Runtime::write_data(Index atom, Index slot, Val value) {
+  state_.data[layout_.atom_data[atom] + slot] = value;
+  cache_.touch_atom(atom);  // also when resuming: its connectors' code may read the data
+  try {
+    if (!check_invariants(atom) || !run_internal_transitions(atom)) return false;
+    return state_.resume_pending[atom] || update_atom(atom);
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+}
+
 /// Resumes atoms whose resume window holds `now`; returns false when one is already past.
 bool Runtime::resume_atoms(TimeValue now) {
   if (!resuming_atoms_.empty()) {

@@ -87,7 +87,8 @@ struct Item {
 struct ExternPortState {
   Index atom = 0, port = 0;
   std::unique_ptr<ExternPortSource> source;
-  std::optional<ExternEvent> head;
+  ExternEvent head;  // when has_head; its buffer is reused from event to event
+  bool has_head = false;
   bool exhausted = false;
   std::optional<Constraint> expected;  // the head event's item, when its port can take it
   bool unexpected = false;             // the head's port cannot take it (policy error, ignore)
@@ -188,6 +189,13 @@ class Runtime {
   /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
   /// 6, policy ignore drops them. False with error() set on error 6.
   bool receive_unexpected_events(TimeValue upto);
+  /// The source of extern port `port` of `atom` has events again after it said it had no more
+  /// (a port its host feeds): the next computation of the items pulls from it again.
+  void wake_extern_port(Index atom, Index port);
+  /// Sets data `slot` of `atom` from outside the model (a host), as if the atom's own action
+  /// had: its invariants are checked, its internal transitions run and its offers recomputed
+  /// (the optimised scheduler recomputes what depends on the atom). False with error() set.
+  bool write_data(Index atom, Index slot, Val value);
   /// Appends the atom ports (atom, port) an item fires to `out`, in execution order.
   void append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const;
   /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
