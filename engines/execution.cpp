@@ -275,29 +275,37 @@ StateView Execution::state() const { return state_->view(); }
 
 void Execution::set_observer(RunObserver* observer) { state_->observer = observer; }
 
-std::optional<DataSlot> Execution::find_data(std::string_view atom, std::string_view data) const {
-  const std::optional<AtomPort> found = find_port(atom, {});
-  if (!found) return std::nullopt;
-  const bipc::ir::System& system = state_->shared.system;
-  const auto& slots = system.atom_types[system.atoms[found->atom].type].data;
-  for (bipc::ir::Index d = 0; d < slots.size(); ++d) {
-    if (slots[d].name == data) return DataSlot{found->atom, d};
+namespace {
+
+/// The atom named `atom` (`ROOT.a.b`) and the index of its type's `member` (data or ports)
+/// named `name`, or nullopt.
+template <class Named>
+std::optional<std::pair<bipc::ir::Index, bipc::ir::Index>> find_in_atom(
+    const Simulator::Shared& shared, std::string_view atom,
+    std::vector<Named> bipc::ir::AtomType::*member, std::string_view name) {
+  const std::vector<std::string>& atoms = shared.layout.atom_names;
+  const auto named = std::find(atoms.begin(), atoms.end(), atom);
+  if (named == atoms.end()) return std::nullopt;
+  const auto a = static_cast<bipc::ir::Index>(named - atoms.begin());
+  const std::vector<Named>& items = shared.system.atom_types[shared.system.atoms[a].type].*member;
+  for (bipc::ir::Index i = 0; i < items.size(); ++i) {
+    if (items[i].name == name) return std::pair{a, i};
   }
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<DataSlot> Execution::find_data(std::string_view atom, std::string_view data) const {
+  const auto found = find_in_atom(state_->shared, atom, &bipc::ir::AtomType::data, data);
+  if (!found) return std::nullopt;
+  return DataSlot{found->first, found->second};
+}
+
 std::optional<AtomPort> Execution::find_port(std::string_view atom, std::string_view port) const {
-  const State& s = *state_;
-  const std::vector<std::string>& names = s.shared.layout.atom_names;
-  const auto named = std::find(names.begin(), names.end(), atom);
-  if (named == names.end()) return std::nullopt;
-  const auto a = static_cast<bipc::ir::Index>(named - names.begin());
-  if (port.empty()) return AtomPort{a, bipc::ir::kNone};
-  const auto& ports = s.shared.system.atom_types[s.shared.system.atoms[a].type].ports;
-  for (bipc::ir::Index p = 0; p < ports.size(); ++p) {
-    if (ports[p].name == port) return AtomPort{a, p};
-  }
-  return std::nullopt;
+  const auto found = find_in_atom(state_->shared, atom, &bipc::ir::AtomType::ports, port);
+  if (!found) return std::nullopt;
+  return AtomPort{found->first, found->second};
 }
 
 Val Execution::read(bipc::ir::Index atom, bipc::ir::Index slot) const {

@@ -103,7 +103,8 @@ class Execution {
   TimeValue now() const;
   /// Steps executed so far.
   std::uint64_t steps() const;
-  /// How the run has ended, as Simulator::run reports it; code kRunOk while it goes on.
+  /// How the run ended, as Simulator::run reports it: the last end an outcome reported (a
+  /// default result before any).
   const RunResult& result() const;
   /// The current state, once started (valid until the next call that changes it).
   StateView state() const;

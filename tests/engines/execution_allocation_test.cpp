@@ -229,6 +229,9 @@ end
 // embeds it: timed, with compound and atom priorities, with builtin extern calls. Their runs are
 // short: new runs start over and over.
 TYPED_TEST(ExecutionAllocations, GeneratedConformanceModels) {
+  if (!std::filesystem::exists(conformance_dir())) {
+    GTEST_SKIP() << "shared conformance data not found (set SMCBIP_SHARED_DATA)";
+  }
   if (generated_conformance_models().empty()) {
     GTEST_SKIP() << "no conformance model was generated (shared data absent at build time)";
   }

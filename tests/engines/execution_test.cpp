@@ -172,7 +172,7 @@ class ExecutionTest : public ::testing::Test {
   }
 };
 
-using Engines = ::testing::Types<Reference, Optimised>;
+using Engines = ::testing::Types<Reference, Optimised, Multithread>;
 TYPED_TEST_SUITE(ExecutionTest, Engines, EngineNames);
 
 TYPED_TEST(ExecutionTest, SteppedRunsAreSimulatorRuns) {
