@@ -49,6 +49,14 @@ class ExternPortSource {
   virtual ~ExternPortSource() = default;
   /// The next event; `now` is the engine's current time. nullopt: no more events, ever.
   virtual std::optional<ExternEvent> next(TimeValue now) = 0;
+  /// As next(), into `event`, whose buffer the engine reuses: false for no more events. A
+  /// source that must not allocate per event overrides it.
+  virtual bool pull(TimeValue now, ExternEvent& event) {
+    std::optional<ExternEvent> next_event = next(now);
+    if (!next_event) return false;
+    event = std::move(*next_event);
+    return true;
+  }
 };
 
 /// Makes the source of one extern port declared `extern port T p(...) as "<class>"`.

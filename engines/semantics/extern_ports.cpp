@@ -24,6 +24,7 @@ bool Runtime::open_extern_ports() {
     state.atom = atom;
     state.port = port;
     state.source = (*found->second)(system_.atoms[atom].path, p.name);
+    state.head.values.reserve(p.data.size());
     extern_ports_.push_back(std::move(state));
   }
   return true;
@@ -34,14 +35,14 @@ void Runtime::refresh_extern_events() {
     e.expected.reset();
     e.unexpected = false;
     if (state_.resume_pending[e.atom]) continue;
-    if (!e.head && !e.exhausted) {
-      e.head = e.source->next(state_.now);
-      e.exhausted = !e.head;
+    if (!e.has_head && !e.exhausted) {
+      e.has_head = e.source->pull(state_.now, e.head);
+      e.exhausted = !e.has_head;
     }
-    if (!e.head) continue;
+    if (!e.has_head) continue;
     const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
     const auto& offer = port_values_[port_offset_[e.atom] + e.port];
-    const TimeValue at = e.head->time;
+    const TimeValue at = e.head.time;
     const bool outdated = at < state_.now;
     std::optional<Constraint> taken;
     if (offer) {
@@ -66,7 +67,7 @@ std::optional<TimeValue> Runtime::first_unexpected_arrival() const {
   std::optional<TimeValue> first;
   for (const ExternPortState& e : extern_ports_) {
     if (!e.unexpected) continue;
-    const TimeValue at = std::max(e.head->time, state_.now);
+    const TimeValue at = std::max(e.head.time, state_.now);
     if (!first || at < *first) first = at;
   }
   return first;
@@ -74,23 +75,23 @@ std::optional<TimeValue> Runtime::first_unexpected_arrival() const {
 
 bool Runtime::receive_unexpected_events(TimeValue upto) {
   for (ExternPortState& e : extern_ports_) {
-    if (!e.unexpected || std::max(e.head->time, state_.now) > upto) continue;
+    if (!e.unexpected || std::max(e.head.time, state_.now) > upto) continue;
     const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
     if (port.policy == bipc::ExternPolicy::Ignore) {
-      e.head.reset();
+      e.has_head = false;
       e.unexpected = false;
       continue;
     }
     const std::string& atom = layout_.atom_names[e.atom];
-    if (e.head->time < state_.now) {
+    if (e.head.time < state_.now) {
       return fail(kUnexpectedEvent,
                   "port " + port.name + " of component " + atom +
-                      " has received an outdated event at " + format_time(e.head->time) +
+                      " has received an outdated event at " + format_time(e.head.time) +
                       " while current engine time is already " + format_time(state_.now) + "!");
     }
-    state_.now = e.head->time;
+    state_.now = e.head.time;
     return fail(kUnexpectedEvent, "port " + port.name + " of component " + atom +
-                                      " has received an event at " + format_time(e.head->time) +
+                                      " has received an event at " + format_time(e.head.time) +
                                       " while being disabled at current state and having event "
                                       "consumption policy 'error'!");
   }
@@ -102,12 +103,18 @@ bool Runtime::fire_extern(const Item& item) {
     if (e.atom != item.atom || e.port != item.port) continue;
     const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
     Val* data = state_.data.data() + layout_.atom_data[e.atom];
-    const std::size_t n = std::min(port.data.size(), e.head->values.size());
-    for (std::size_t i = 0; i < n; ++i) data[port.data[i]] = e.head->values[i];
-    e.head.reset();
+    const std::size_t n = std::min(port.data.size(), e.head.values.size());
+    for (std::size_t i = 0; i < n; ++i) data[port.data[i]] = e.head.values[i];
+    e.has_head = false;
     return fire_port(e.atom, e.port);
   }
   return true;
+}
+
+void Runtime::wake_extern_port(Index atom, Index port) {
+  for (ExternPortState& e : extern_ports_) {
+    if (e.atom == atom && e.port == port) e.exhausted = false;
+  }
 }
 
 }  // namespace smcbip::engines

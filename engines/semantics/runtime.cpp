@@ -4,7 +4,6 @@
 #include "engines/semantics/runtime.h"
 
 #include <algorithm>
-#include <functional>
 #include <sstream>
 
 #include "engines/engines.h"
@@ -108,12 +107,14 @@ Frame Runtime::atom_frame(Index atom) {
 
 bool Runtime::initialize() {
   cache_.invalidate_all();
-  state_ = RunState{};
+  // Assigned in place: a run started again reuses the buffers.
+  state_.now = 0;
   state_.data.assign(layout_.data_size, make_int(0));
   state_.marking.assign(layout_.place_count, 0);
   state_.clocks.assign(layout_.clock_count, ClockState{});
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
+  for (std::optional<AtomPortValue>& offer : port_values_) offer.reset();
   if (!open_extern_ports()) return false;
   for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
@@ -299,10 +300,11 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
   if (type.priorities.empty()) return true;
   if (!check_atom_priority_cycle(s, atom)) return false;
   // A port is disabled when a chain of active rules from it ends at an enabled port.
+  AtomPriorityBuffers& b = *s.priorities;
   const std::size_t n = type.ports.size();
   const std::size_t rules = type.priorities.size();
-  std::vector<bool> active(rules);
-  for (std::size_t r = 0; r < rules; ++r) active[r] = s.eval.holds(type.priorities[r].guard, f);
+  b.active.assign(rules, 0);
+  for (std::size_t r = 0; r < rules; ++r) b.active[r] = s.eval.holds(type.priorities[r].guard, f);
   auto in_low = [&](std::size_t r, std::size_t p) {
     const auto& rule = type.priorities[r];
     return rule.low == kNone ? rule.high != p : rule.low == p;
@@ -317,37 +319,37 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
     }
     return false;
   };
-  std::vector<bool> disabled(n, false);
+  b.disabled.assign(n, 0);
   for (std::size_t p = 0; p < n; ++p) {
     if (!values[p] || type.ports[p].is_extern) continue;
-    std::vector<bool> seen(rules, false);
-    std::vector<std::size_t> chain_ends;
+    b.seen.assign(rules, 0);
+    b.chain_ends.clear();
     for (std::size_t r = 0; r < rules; ++r) {
-      if (active[r] && in_low(r, p)) {
-        seen[r] = true;
-        chain_ends.push_back(r);
+      if (b.active[r] && in_low(r, p)) {
+        b.seen[r] = 1;
+        b.chain_ends.push_back(r);
       }
     }
-    while (!chain_ends.empty() && !disabled[p]) {
-      const std::size_t r = chain_ends.back();
-      chain_ends.pop_back();
+    while (!b.chain_ends.empty() && !b.disabled[p]) {
+      const std::size_t r = b.chain_ends.back();
+      b.chain_ends.pop_back();
       if (high_enabled(r)) {
-        disabled[p] = true;
+        b.disabled[p] = 1;
         break;
       }
       for (std::size_t r2 = 0; r2 < rules; ++r2) {
-        if (seen[r2] || !active[r2]) continue;
+        if (b.seen[r2] || !b.active[r2]) continue;
         bool chained = false;
         for (std::size_t q = 0; q < n && !chained; ++q) chained = in_high(r, q) && in_low(r2, q);
         if (chained) {
-          seen[r2] = true;
-          chain_ends.push_back(r2);
+          b.seen[r2] = 1;
+          b.chain_ends.push_back(r2);
         }
       }
     }
   }
   for (std::size_t p = 0; p < n; ++p) {
-    if (disabled[p]) values[p].reset();
+    if (b.disabled[p]) values[p].reset();
   }
   return true;
 }
@@ -357,31 +359,42 @@ bool Runtime::check_atom_priority_cycle(const AtomScratch& s, Index atom) {
   const std::size_t rules = type.priorities.size();
   const std::size_t n = type.ports.size();
   const Frame f = atom_frame(s, atom);
-  std::vector<bool> active(rules);
-  for (std::size_t r = 0; r < rules; ++r) active[r] = s.eval.holds(type.priorities[r].guard, f);
+  AtomPriorityBuffers& b = *s.priorities;
+  b.active.assign(rules, 0);
+  for (std::size_t r = 0; r < rules; ++r) b.active[r] = s.eval.holds(type.priorities[r].guard, f);
   auto chained = [&](std::size_t r, std::size_t r2) {
-    const auto& a = type.priorities[r];
-    const auto& b = type.priorities[r2];
+    const auto& x = type.priorities[r];
+    const auto& y = type.priorities[r2];
     for (std::size_t q = 0; q < n; ++q) {
-      const bool high = a.high == kNone ? a.low != q : a.high == q;
-      const bool low = b.low == kNone ? b.high != q : b.low == q;
+      const bool high = x.high == kNone ? x.low != q : x.high == q;
+      const bool low = y.low == kNone ? y.high != q : y.low == q;
       if (high && low) return true;
     }
     return false;
   };
-  // Depth-first search for a cycle among active rules (colours: 0 new, 1 on path, 2 done).
-  std::vector<int> colour(rules, 0);
-  std::function<bool(std::size_t)> cyclic = [&](std::size_t r) {
-    colour[r] = 1;
-    for (std::size_t r2 = 0; r2 < rules; ++r2) {
-      if (!active[r2] || !chained(r, r2)) continue;
-      if (colour[r2] == 1 || (colour[r2] == 0 && cyclic(r2))) return true;
+  // Depth-first search for a cycle among active rules (colours: 0 new, 1 on path, 2 done), on
+  // an explicit path of (rule, next rule to try).
+  b.colour.assign(rules, 0);
+  for (std::size_t root = 0; root < rules; ++root) {
+    if (!b.active[root] || b.colour[root] != 0) continue;
+    b.colour[root] = 1;
+    b.path.assign(1, {root, 0});
+    while (!b.path.empty()) {
+      const std::size_t r = b.path.back().first;
+      std::size_t& next = b.path.back().second;
+      while (next < rules && (!b.active[next] || !chained(r, next))) ++next;
+      if (next == rules) {
+        b.colour[r] = 2;
+        b.path.pop_back();
+        continue;
+      }
+      const std::size_t r2 = next++;
+      if (b.colour[r2] == 1) return s.fail(4, "cycle in priorities! ()");
+      if (b.colour[r2] == 0) {
+        b.colour[r2] = 1;
+        b.path.emplace_back(r2, 0);
+      }
     }
-    colour[r] = 2;
-    return false;
-  };
-  for (std::size_t r = 0; r < rules; ++r) {
-    if (active[r] && colour[r] == 0 && cyclic(r)) return s.fail(4, "cycle in priorities! ()");
   }
   return true;
 }
@@ -580,11 +593,23 @@ bool Runtime::execute(const Item& item, TimeValue at) {
   }
 }
 
+bool Runtime::write_data(Index atom, Index slot, Val value) {
+  state_.data[layout_.atom_data[atom] + slot] = value;
+  cache_.touch_atom(atom);  // also when resuming: its connectors' code may read the data
+  try {
+    if (!check_invariants(atom) || !run_internal_transitions(atom)) return false;
+    return state_.resume_pending[atom] || update_atom(atom);
+  } catch (const CodeFault& fault) {
+    return fail(kInternalError, fault.message);
+  }
+}
+
 /// Resumes atoms whose resume window holds `now`; returns false when one is already past.
 bool Runtime::resume_atoms(TimeValue now) {
   if (!resuming_atoms_.empty()) {
     // In atom order, as the reference engine resumes them.
-    std::vector<Index> atoms(resuming_atoms_.begin(), resuming_atoms_.end());
+    std::vector<Index>& atoms = resume_order_;
+    atoms.assign(resuming_atoms_.begin(), resuming_atoms_.end());
     std::sort(atoms.begin(), atoms.end());
     for (Index a : atoms) {
       state_.resume_pending[a] = 0;

@@ -87,7 +87,8 @@ struct Item {
 struct ExternPortState {
   Index atom = 0, port = 0;
   std::unique_ptr<ExternPortSource> source;
-  std::optional<ExternEvent> head;
+  ExternEvent head;  // when has_head; its buffer is reused from event to event
+  bool has_head = false;
   bool exhausted = false;
   std::optional<Constraint> expected;  // the head event's item, when its port can take it
   bool unexpected = false;             // the head's port cannot take it (policy error, ignore)
@@ -117,6 +118,17 @@ struct UnsupportedRun {
   std::string message;
 };
 
+/// Reusable buffers for an atom type's priority rules (Runtime::update_atom), one set per
+/// thread that fires atoms.
+struct AtomPriorityBuffers {
+  std::vector<std::uint8_t> active;    // per rule: its guard holds
+  std::vector<std::uint8_t> colour;    // per rule, in the cycle search
+  std::vector<std::uint8_t> disabled;  // per port
+  std::vector<std::uint8_t> seen;      // per rule, in the chains from one port
+  std::vector<std::size_t> chain_ends;
+  std::vector<std::pair<std::size_t, std::size_t>> path;  // cycle search: (rule, next rule)
+};
+
 struct ParallelFiring;
 
 class Runtime {
@@ -128,7 +140,8 @@ class Runtime {
   Runtime(const Runtime&) = delete;
   Runtime& operator=(const Runtime&) = delete;
 
-  /// Initial actions, internal transitions and checks; false with error() set on failure.
+  /// Initial actions, internal transitions and checks (also to start a run over); false with
+  /// error() set on failure.
   bool initialize();
   /// Computes the enabled items of the current state; false with error() set on failure.
   bool compute_items();
@@ -176,6 +189,13 @@ class Runtime {
   /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
   /// 6, policy ignore drops them. False with error() set on error 6.
   bool receive_unexpected_events(TimeValue upto);
+  /// The source of extern port `port` of `atom` has events again after it said it had no more
+  /// (a port its host feeds): the next computation of the items pulls from it again.
+  void wake_extern_port(Index atom, Index port);
+  /// Sets data `slot` of `atom` from outside the model (a host), as if the atom's own action
+  /// had: its invariants are checked, its internal transitions run and its offers recomputed
+  /// (the optimised scheduler recomputes what depends on the atom). False with error() set.
+  bool write_data(Index atom, Index slot, Val value);
   /// Appends the atom ports (atom, port) an item fires to `out`, in execution order.
   void append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const;
   /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
@@ -203,6 +223,7 @@ class Runtime {
     Val* atom_data = nullptr;
     /// Firing on a worker thread: the scheduler's shared bookkeeping is left to the caller.
     bool on_worker = false;
+    AtomPriorityBuffers* priorities = nullptr;  // the thread's own
     bool fail(int code, std::string message) const {
       error = {code, std::move(message)};
       return false;
@@ -321,8 +342,13 @@ class Runtime {
   /// An interaction named by a priority rule: its connector and port set.
   using RuleNode = std::pair<Index, PortSet>;
   bool applies_low(const PriorityRule& rule, const RuleNode& interaction) const;
-  std::vector<RuleNode> high_side(const PriorityRule& rule) const;
-  std::vector<RuleNode> low_side(const PriorityRule& rule) const;
+  /// The interactions of the rule's high (low) side, into `out`.
+  void high_side(const PriorityRule& rule, std::vector<RuleNode>& out) const;
+  void low_side(const PriorityRule& rule, std::vector<RuleNode>& out) const;
+  /// Restricts `value` by the dominators of every high side reached from `low` through active
+  /// rules of `rules` (apply_priorities; `depth`: of this recursion).
+  void dominate(InteractionValue& value, const std::vector<PriorityRule>& rules,
+                const RuleNode& low, std::size_t depth);
   void add_defined(Index connector, std::vector<RuleNode>& out) const;
   void restrict_by(Constraint& c, const Constraint& dominator) const;
   /// The atoms' clock invariants and pending resume windows intersected: time cannot pass
@@ -359,7 +385,8 @@ class Runtime {
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
-  const AtomScratch main_scratch_{eval_, error_, nullptr};
+  AtomPriorityBuffers priority_buffers_;
+  const AtomScratch main_scratch_{eval_, error_, nullptr, false, &priority_buffers_};
   // Per atom: where its slots are (atom_frame).
   struct AtomSlots {
     std::size_t data = 0;
@@ -381,6 +408,7 @@ class Runtime {
   // The atoms whose pending resume or invariant bounds the time that may pass (the others
   // leave wait_interval as it is), and those with a pending resume.
   IndexSet bounding_atoms_, resuming_atoms_;
+  std::vector<Index> resume_order_;  // resume_atoms' buffer
   // Internal ports (indices into layout_.internal_ports) offered with an urgent constraint, as
   // of the last compute_items; per atom, its internal ports.
   IndexSet urgent_internal_ports_;
@@ -424,6 +452,10 @@ class Runtime {
   std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
+  std::vector<bool> active_rules_;  // check_compound_priority_cycles' buffer
+  // apply_priorities' buffers: the rule nodes visited (sorted), the high sides per depth.
+  std::vector<RuleNode> visited_rule_nodes_;
+  std::deque<std::vector<RuleNode>> high_sides_;
   // Multithread scheduler only (threads > 1): the pool and per-thread evaluators.
   std::unique_ptr<ParallelFiring> parallel_;
 };

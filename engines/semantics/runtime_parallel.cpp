@@ -131,7 +131,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
     const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
     t.data.assign(first, first + static_cast<std::ptrdiff_t>(
                                      system_.atom_types[system_.atoms[atom].type].data.size()));
-    AtomScratch s{*t.eval, p.errors[i], t.data.data(), /*on_worker=*/true};
+    AtomScratch s{*t.eval, p.errors[i], t.data.data(), /*on_worker=*/true, &t.priorities};
     try {
       p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {

@@ -2,7 +2,6 @@
 // maximal progress, applied to the connectors' interaction values.
 #include <algorithm>
 #include <functional>
-#include <set>
 
 #include "engines/semantics/detail/runtime_shared.h"
 
@@ -49,8 +48,8 @@ void Runtime::add_defined(Index connector, std::vector<RuleNode>& out) const {
     out.push_back({connector, d.ports});
 }
 
-std::vector<Runtime::RuleNode> Runtime::high_side(const PriorityRule& rule) const {
-  std::vector<RuleNode> out;
+void Runtime::high_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
+  out.clear();
   if (rule.high_connector == kNone) {
     for (Index k : system_.compounds[rule.compound].connectors) {
       if (layout_.top_level[k] && k != rule.low_connector) add_defined(k, out);
@@ -60,19 +59,17 @@ std::vector<Runtime::RuleNode> Runtime::high_side(const PriorityRule& rule) cons
   } else {
     out.push_back({rule.high_connector, rule.high});
   }
-  return out;
 }
 
-std::vector<Runtime::RuleNode> Runtime::low_side(const PriorityRule& rule) const {
-  std::vector<RuleNode> out;
+void Runtime::low_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
+  out.clear();
   if (rule.low_connector != kNone) {
     out.push_back({rule.low_connector, rule.low});
-    return out;
+    return;
   }
   for (Index k : system_.compounds[rule.compound].connectors) {
     if (layout_.top_level[k] && k != rule.high_connector) add_defined(k, out);
   }
-  return out;
 }
 
 bool Runtime::check_compound_priority_cycles() {
@@ -80,7 +77,8 @@ bool Runtime::check_compound_priority_cycles() {
   acyclic_rule_sets_.resize(layout_.rules.size());
   for (const Index compound : layout_.ruled_compounds) {
     const std::vector<PriorityRule>& rules = layout_.rules[compound];
-    std::vector<bool> active(rules.size());
+    std::vector<bool>& active = active_rules_;
+    active.assign(rules.size(), false);
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
     // The search depends only on which rules are active: a set found acyclic stays so.
     if (acyclic_rule_sets_[compound].count(active)) continue;
@@ -95,7 +93,9 @@ bool Runtime::check_compound_priority_cycles() {
           for (std::size_t r = 0; r < rules.size(); ++r) {
             if (!active[r] || !applies_low(rules[r], x)) continue;
             const RuleNode own_low{rules[r].low_connector, rules[r].low};
-            for (const RuleNode& d : high_side(rules[r])) {
+            std::vector<RuleNode> highs;
+            high_side(rules[r], highs);
+            for (const RuleNode& d : highs) {
               std::vector<RuleNode> next = path;
               if (rules[r].low_connector != kNone && x != own_low) next.push_back(own_low);
               next.push_back(d);
@@ -111,9 +111,11 @@ bool Runtime::check_compound_priority_cycles() {
           }
           return false;
         };
+    std::vector<RuleNode> lows;
     for (std::size_t r = 0; r < rules.size(); ++r) {
       if (!active[r]) continue;
-      for (const RuleNode& low : low_side(rules[r])) {
+      low_side(rules[r], lows);
+      for (const RuleNode& low : lows) {
         if (!search({low}, 0)) continue;
         std::string text;
         for (std::size_t i = 0; i < cycle.size(); ++i) {
@@ -122,7 +124,7 @@ bool Runtime::check_compound_priority_cycles() {
         return fail(3, "cycle in priorities! (" + text + ")");
       }
     }
-    acyclic_rule_sets_[compound].insert(std::move(active));
+    acyclic_rule_sets_[compound].insert(active);
   }
   return true;
 }
@@ -187,28 +189,35 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
   if (rules.empty()) return;
   // Rule closure: the dominators of every high side reached from this value through active
   // rules, whether or not the interactions in between are enabled.
+  visited_rule_nodes_.clear();
+  dominate(value, rules, {k, value.ports}, 0);
+}
+
+void Runtime::dominate(InteractionValue& value, const std::vector<PriorityRule>& rules,
+                       const RuleNode& low, std::size_t depth) {
+  // Visited nodes: a sorted vector, which keeps its capacity from value to value.
+  const auto at = std::lower_bound(visited_rule_nodes_.begin(), visited_rule_nodes_.end(), low);
+  if (at != visited_rule_nodes_.end() && *at == low) return;
+  visited_rule_nodes_.insert(at, low);
+  if (depth == high_sides_.size()) high_sides_.emplace_back();
+  std::vector<RuleNode>& highs = high_sides_[depth];  // a deque: deeper calls leave it in place
   // Only the rules whose low side may name the node's connector: a chain of n rules costs n
   // visits per value, not n^2.
-  std::set<RuleNode> visited;
-  std::function<void(const RuleNode&)> dominate = [&](const RuleNode& low) {
-    if (!visited.insert(low).second) return;
-    for (Index r : layout_.rules_by_low[low.first]) {
-      const PriorityRule& rule = rules[r];
-      if (!applies_low(rule, low) || !rule_guard(rule)) continue;
-      for (const RuleNode& high : high_side(rule)) {
-        compute_connector(high.first);
-        for (Index w : connector_values_[high.first]) {
-          const InteractionValue& other = values_[w];
-          if (other.ports == high.second ||
-              (maximal_progress_ && subset(high.second, other.ports))) {
-            restrict_by(value.after, other.raw);
-          }
+  for (Index r : layout_.rules_by_low[low.first]) {
+    const PriorityRule& rule = rules[r];
+    if (!applies_low(rule, low) || !rule_guard(rule)) continue;
+    high_side(rule, highs);
+    for (const RuleNode& high : highs) {
+      compute_connector(high.first);
+      for (Index w : connector_values_[high.first]) {
+        const InteractionValue& other = values_[w];
+        if (other.ports == high.second || (maximal_progress_ && subset(high.second, other.ports))) {
+          restrict_by(value.after, other.raw);
         }
-        dominate(high);
       }
+      dominate(value, rules, high, depth + 1);
     }
-  };
-  dominate({k, value.ports});
+  }
 }
 
 void Runtime::recompute_priorities(Index k) {

@@ -50,6 +50,9 @@ class DatePlanner {
   /// resumes cut them all), the timed items draw again within their current windows.
   void replan_within_windows(const Runtime& runtime, std::vector<TimeValue>& dates);
 
+  /// Forgets every planned date: the next plan() draws them all (a new run).
+  void forget() { ++generation_; }
+
  private:
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.

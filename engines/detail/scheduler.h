@@ -1,0 +1,339 @@
+// The scheduling of one run, shared by Simulator (whole runs with a trace) and Execution (a run
+// its host drives step by step): what the run does next and doing it. Internal to engines/.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <new>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "engines/engines.h"
+#include "engines/semantics/runtime.h"
+#include "engines/stochastic/date_planner.h"
+
+namespace smcbip::engines {
+
+/// What the runs of one model share: the layout, the bound externs, the seed.
+struct Simulator::Shared {
+  std::unique_ptr<InterpretedModel> owned;  // when built from an IR
+  const Model& model;
+  const bipc::ir::System& system;
+  SimulateOptions options;
+  Layout layout;
+  StringPool strings;
+  BoundFunctions functions;
+  CustomDistributions custom;
+  std::string problem;
+  std::uint64_t seed = 0;
+  bool stochastic = false;
+
+  Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
+  Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
+      : owned(std::move(m)), model(*owned), system(owned->system()), options(o) {}
+  /// Builds the layout, binds `externs`, loads the custom distributions and fixes the seed;
+  /// `problem` says what failed.
+  void prepare(const Externs& externs);
+};
+
+namespace detail {
+
+/// What a run does next, as Scheduler::decide found it.
+struct Decision {
+  enum class Kind : std::uint8_t {
+    Fire,     // execute `item` (the `chosen`-th of the state's items) at `date`
+    Receive,  // extern events no port can take arrive at `date`; then decide again
+    End,      // the run ends with `end` (`code`: an Error's, see Scheduler::error())
+  } kind = Kind::End;
+  std::size_t chosen = 0;
+  TimeValue date = 0;
+  Item item;
+  RunEnd end = RunEnd::Deadlock;
+  int code = kRunOk;
+};
+
+/// The first date of `interval` from `now` on.
+inline TimeValue earliest(const Interval& interval, TimeValue now) {
+  return std::max(interval.first(), now);
+}
+
+/// The date an item is planned at by the reference scheduler: uniform over the (integer
+/// nanosecond) points of a bounded window; on an unbounded one the left end plus an
+/// exponential delay of mean 10 ns, as the reference engine's Interval::random does.
+inline TimeValue random_date(const Interval& interval, RandomStream& random) {
+  if (interval.bounded()) return uniform_date(interval, random);
+  return interval.first() +
+         static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
+}
+
+/// The delay floor(-10 ln u) of random_date's unbounded case, computed only when needed: the
+/// scheduler mostly has to know whether it is below, at or above a given whole number of
+/// nanoseconds, which comparing u with exp(-d / 10) answers without a logarithm. Near those
+/// bounds (within a relative 1e-9, far above the rounding errors of exp and log) the delay is
+/// computed exactly as random_date does, so the choices are the same.
+class ExponentialDelay {
+ public:
+  static TimeValue of(double u) { return static_cast<TimeValue>(std::floor(-10.0 * std::log(u))); }
+  /// The sign of of(u) - d; the bounds of the last d are kept (items mostly share it).
+  int compare(double u, TimeValue d) {
+    if (d < 0) return 1;  // u < 1, so the delay is never negative
+    if (d != d_) {
+      d_ = d;
+      below_d_ = std::exp(-static_cast<double>(d) / 10.0);  // u above it: delay < d
+      below_next_ = std::exp(-static_cast<double>(d + 1) / 10.0);
+    }
+    constexpr double kMargin = 1e-9;
+    if (u > below_d_ * (1 + kMargin)) return -1;
+    if (u < below_next_ * (1 - kMargin)) return 1;
+    if (u < below_d_ * (1 - kMargin) && u > below_next_ * (1 + kMargin)) return 0;
+    const TimeValue exact = of(u);
+    return exact < d ? -1 : exact > d ? 1 : 0;
+  }
+
+ private:
+  TimeValue d_ = -1;
+  double below_d_ = 0, below_next_ = 0;
+};
+
+/// What observers are told of the step that fires `item` at `at`, the `step`-th.
+inline StepInfo step_info(const Item& item, const Runtime& runtime, std::uint64_t step,
+                          TimeValue at) {
+  StepInfo info;
+  info.step = step;
+  info.time = at;
+  switch (item.kind) {
+    case Item::Kind::Interaction:
+      info.fired = StepInfo::Fired::Interaction;
+      info.connector = runtime.values()[item.value].connector;
+      return info;
+    case Item::Kind::Internal:
+      info.fired = StepInfo::Fired::Internal;
+      break;
+    case Item::Kind::External:
+      info.fired = StepInfo::Fired::External;
+      break;
+  }
+  info.atom = item.atom;
+  info.port = item.port;
+  return info;
+}
+
+/// Picks the item of each step instead of the random choice (--interactive).
+class ItemPicker {
+ public:
+  virtual ~ItemPicker() = default;
+  /// An index into runtime.items(); nullopt stops the run.
+  virtual std::optional<std::size_t> pick(const Runtime& runtime) = 0;
+};
+
+/// One run's random stream, semantics and choice of items: the reference engine's random race
+/// of dates (or its two-draw shortcut on a shared window), the stochastic race of planned dates,
+/// or a picker's choice. In simulated time it also resumes atoms after each step; real time is
+/// left to the caller (it waits, then checks time safety, which resumes).
+class Scheduler {
+ public:
+  Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::ostream& model_output,
+            ItemPicker* picker = nullptr);
+
+  /// Initial actions and checks, and in simulated time the initial resumes; false with error()
+  /// set on failure.
+  bool start();
+  /// start() for run `run_index` of the seed: a new run from the initial state, which reuses
+  /// the buffers the last one grew.
+  bool restart(std::uint64_t run_index);
+  /// Computes the current state's items and decides what comes next; the random draws of the
+  /// choice happen here. The decision (decision()) holds until the next decide(); a Fire or
+  /// Receive decision can be carried out until the state changes.
+  [[gnu::always_inline]] inline const Decision& decide();
+  /// The last decision.
+  const Decision& decision() const { return decision_; }
+  /// Carries out a Fire or Receive decision (a Fire counts one step); false with error() set.
+  [[gnu::always_inline]] inline bool perform(const Decision& decision);
+
+  std::uint64_t steps() const { return steps_; }
+  /// Why the run failed (after start, decide or perform reported an error).
+  const ModelError& error() const { return error_; }
+  /// Records the runtime's error as error() after a direct use of runtime() failed; false.
+  bool record_error();
+  Runtime& runtime() { return runtime_; }
+  const Runtime& runtime() const { return runtime_; }
+
+ private:
+  /// An Error end with the runtime's error.
+  const Decision& fail();
+  const Decision& end(RunEnd end, int code = kRunOk);
+  const Decision& receive(TimeValue arrival);
+  [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> choose(
+      bool& failed);
+  [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>>
+  shared_window_choice();
+  [[gnu::always_inline]] inline std::pair<std::size_t, TimeValue> random_choice();
+  [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> race(bool& failed);
+  [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>>
+  earliest_in_window();
+
+  Simulator::Shared& shared_;
+  const SimulateOptions& options_;
+  ItemPicker* picker_;
+  RandomStream random_;
+  Runtime runtime_;
+  DatePlanner planner_;
+  std::vector<TimeValue> dates_;  // the stochastic race's planned dates, per item
+  std::string planner_problem_;   // reused: planning a date may fail with a message
+  std::uint64_t steps_ = 0;
+  ModelError error_;
+  Decision decision_;
+};
+
+// The per-step functions are inlined into each scheduler loop (Simulator's, Execution's), as they
+// were when the loop had them to itself: calls, and the copies of what they return, cost a few
+// percent of an optimised step.
+
+inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::choose(bool& failed) {
+  if (picker_) {
+    const std::optional<std::size_t> picked = picker_->pick(runtime_);
+    if (!picked) return std::nullopt;
+    const Interval& window = runtime_.items()[*picked].constraint.interval;
+    return std::pair{*picked, earliest(window, runtime_.state().now)};
+  }
+  if (shared_.stochastic) return race(failed);
+  if (auto choice = shared_window_choice()) return choice;
+  return std::pair{random_choice()};
+}
+
+/// random_choice when every item has the same window (untimed models), in two draws instead
+/// of one per item. The race is then symmetric: its winner is uniform among the n items and
+/// independent of the winning date. On the window [now, +inf) the dates are now + floor(E_i),
+/// the E_i i.i.d. exponential of mean 10 ns, so the earliest is now + floor(min E_i) and
+/// min E_i is exponential of mean 10/n; --first-enabled keeps the winner's own date (mean
+/// 10). On the window {now}, and with --asap, every date is now. Other windows: nullopt.
+inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::shared_window_choice() {
+  if (!shared_.layout.untimed) return std::nullopt;
+  const TimeValue now = runtime_.state().now;
+  const Interval& window = runtime_.items_window();
+  const bool open_ended = window == Interval::from(now);
+  if (!open_ended && !(window == Interval::point(now))) return std::nullopt;
+  const std::size_t n = runtime_.item_count();
+  const auto chosen = static_cast<std::size_t>(random_.below(n));
+  if (options_.asap || !open_ended) return std::pair{chosen, now};
+  const double mean = options_.first_enabled ? 10.0 : 10.0 / static_cast<double>(n);
+  const double delay = std::floor(-mean * std::log(random_.uniform01_open()));
+  return std::pair{chosen, now + static_cast<TimeValue>(delay)};
+}
+
+/// The reference scheduler: every item draws a date in its window, the earliest wins.
+inline std::pair<std::size_t, TimeValue> Scheduler::random_choice() {
+  const auto& items = runtime_.items();
+  const TimeValue now = runtime_.state().now;
+  std::size_t best = 0, ties = 0;
+  TimeValue best_criterion = kPlusInfinity, best_date = now;
+  ExponentialDelay delay;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const Interval& interval = items[i].constraint.interval;
+    if (!options_.asap && !options_.first_enabled && !interval.bounded()) {
+      // The planned date is the criterion: often decided without its logarithm.
+      const TimeValue first = interval.first();
+      const double u = random_.uniform01_open();
+      const int order = i == 0 ? -1 : delay.compare(u, best_criterion - first);
+      if (order < 0) {
+        best = i;
+        ties = 1;
+        best_criterion = best_date = first + ExponentialDelay::of(u);
+      } else if (order == 0 && random_.below(++ties) == 0) {
+        best = i;
+        best_date = best_criterion;
+      }
+      continue;
+    }
+    const TimeValue planned =
+        options_.asap ? earliest(interval, now) : random_date(interval, random_);
+    const TimeValue criterion = options_.first_enabled ? earliest(interval, now) : planned;
+    if (i == 0 || criterion < best_criterion) {
+      best = i;
+      ties = 1;
+      best_criterion = criterion;
+      best_date = planned;
+    } else if (criterion == best_criterion && random_.below(++ties) == 0) {
+      best = i;
+      best_date = planned;
+    }
+  }
+  return {best, std::max(best_date, now)};
+}
+
+/// Stochastic mode: the earliest planned date that lies in its item's window wins.
+inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::race(bool& failed) {
+  if (!planner_.plan(runtime_, dates_, planner_problem_)) {
+    error_ = {kInputError, planner_problem_};
+    failed = true;
+    return std::nullopt;
+  }
+  std::optional<std::pair<std::size_t, TimeValue>> best = earliest_in_window();
+  if (!best) {
+    planner_.replan_within_windows(runtime_, dates_);
+    best = earliest_in_window();
+  }
+  return best;
+}
+
+inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::earliest_in_window() {
+  const auto& items = runtime_.items();
+  std::optional<std::pair<std::size_t, TimeValue>> best;
+  std::uint64_t ties = 0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (!items[i].constraint.interval.contains(dates_[i])) continue;
+    if (!best || dates_[i] < best->second) {
+      best = std::pair{i, dates_[i]};
+      ties = 1;
+    } else if (dates_[i] == best->second && random_.below(++ties) == 0) {
+      best->first = i;
+    }
+  }
+  return best;
+}
+
+inline const Decision& Scheduler::decide() {
+  if (!runtime_.compute_items()) return fail();
+  const std::optional<TimeValue> arrival = runtime_.next_unexpected_arrival();
+  if (runtime_.item_count() == 0) {
+    if (!arrival || !runtime_.wait_interval().contains(*arrival)) {
+      const bool deadlock = runtime_.wait_interval().right == kPlusInfinity;
+      return end(deadlock ? RunEnd::Deadlock : RunEnd::Timelock);
+    }
+    return receive(*arrival);
+  }
+  if (options_.limit && steps_ >= *options_.limit) return end(RunEnd::Limit);
+  bool failed = false;
+  const std::optional<std::pair<std::size_t, TimeValue>> choice = choose(failed);
+  if (failed) return end(RunEnd::Error, error_.code);
+  if (!choice) return end(picker_ ? RunEnd::Stopped : RunEnd::Timelock);
+  if (arrival && *arrival <= choice->second) return receive(*arrival);
+  decision_.kind = Decision::Kind::Fire;
+  decision_.chosen = choice->first;
+  decision_.date = choice->second;
+  // Built in place from the returned item (an assignment would copy it): Item is trivially
+  // destructible.
+  static_assert(std::is_trivially_destructible_v<Item>);
+  ::new (&decision_.item) Item(runtime_.item(choice->first));
+  return decision_;
+}
+
+inline bool Scheduler::perform(const Decision& decision) {
+  if (decision.kind == Decision::Kind::Receive) {
+    return runtime_.receive_unexpected_events(decision.date) || record_error();
+  }
+  if (!runtime_.execute(decision.item, decision.date)) return record_error();
+  ++steps_;
+  return options_.real_time || runtime_.resume_atoms(decision.date) || record_error();
+}
+
+}  // namespace detail
+
+}  // namespace smcbip::engines
