@@ -31,7 +31,12 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/smcbipConfigVersion.cmake
 install(EXPORT smcbipTargets NAMESPACE smcbip:: DESTINATION ${SMCBIP_PACKAGE_DIR})
 install(FILES ${PROJECT_BINARY_DIR}/smcbipConfig.cmake
               ${PROJECT_BINARY_DIR}/smcbipConfigVersion.cmake
+              ${CMAKE_CURRENT_LIST_DIR}/smcbip_model.cmake
         DESTINATION ${SMCBIP_PACKAGE_DIR})
+# smcbip_add_model, for smcbip's own targets and beside the build tree's config.
+include(${CMAKE_CURRENT_LIST_DIR}/smcbip_model.cmake)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/smcbip_model.cmake ${PROJECT_BINARY_DIR}/smcbip_model.cmake
+               COPYONLY)
 
 # The same targets over the build tree, beside the config files.
 export(EXPORT smcbipTargets NAMESPACE smcbip:: FILE ${PROJECT_BINARY_DIR}/smcbipTargets.cmake)

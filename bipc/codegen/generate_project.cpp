@@ -51,9 +51,9 @@ std::string model_header(const std::string& hash, const ProjectOptions& options)
   std::ostringstream out;
   out << kBanner << "// The model " << comment_text(options.root) << " of "
       << comment_text(options.model_file) << ", compiled.\n"
-      << "#pragma once\n\n#include <string_view>\n\n"
-      << "#include \"bipc/ir/ir.h\"\n#include \"engines/externs.h\"\n"
-      << "#include \"engines/model.h\"\n\n"
+      << "#pragma once\n\n#include <iostream>\n#include <string_view>\n\n"
+      << "#include \"bipc/ir/ir.h\"\n#include \"engines/execution.h\"\n"
+      << "#include \"engines/externs.h\"\n#include \"engines/model.h\"\n\n"
       << open << "\n"
       << "/// The identity of the checked model: SHA-256 of its normalised IR and the contents of\n"
       << "/// its extern sources (bipc/ir/model_hash.h), as `bipc hash` prints it.\n"
@@ -68,7 +68,25 @@ std::string model_header(const std::string& hash, const ProjectOptions& options)
       << "/// parameters and result, bound to the C++ of its @cpp sources); not the builtins.\n"
       << "void register_externs(smcbip::engines::Externs& externs);\n"
       << "/// The builtins and the model's extern functions.\n"
-      << "smcbip::engines::Externs externs();\n\n"
+      << "smcbip::engines::Externs externs();\n"
+      << "/// externs(), made once for the life of the program.\n"
+      << "const smcbip::engines::Externs& bound_externs();\n\n"
+      << "/// The options a Component runs with unless told otherwise: the optimised engine and\n"
+      << "/// seed 0, so that a flight build makes the same choices as the checked runs of seed 0.\n"
+      << "inline smcbip::engines::SimulateOptions component_options() {\n"
+      << "  smcbip::engines::SimulateOptions options;\n"
+      << "  options.engine = smcbip::engines::EngineKind::Optimised;\n"
+      << "  options.seed = 0;\n  return options;\n}\n\n"
+      << "/// The model embedded in a host program that owns the main loop: start(), then step() or\n"
+      << "/// run_until(its clock); read() and write() data, feed() the extern ports no registered\n"
+      << "/// class serves, observe fired interactions (set_observer or the outcomes). Steps do not\n"
+      << "/// allocate once the first ones have sized the buffers (engines/execution.h).\n"
+      << "class Component : public smcbip::engines::Execution {\n public:\n"
+      << "  explicit Component(const smcbip::engines::SimulateOptions& options = component_options(),\n"
+      << "                     std::ostream& model_output = std::cout)\n"
+      << "      : Execution(model(), options, bound_externs(), model_output) {}\n"
+      << "  /// The identity of the model this component runs (kModelHash).\n"
+      << "  static constexpr std::string_view model_hash() { return kModelHash; }\n};\n\n"
       << close;
   return out.str();
 }
@@ -95,6 +113,8 @@ std::string model_data(const ir::System& system, const ProjectOptions& options) 
       << "smcbip::engines::Externs externs() {\n"
       << "  smcbip::engines::Externs all = smcbip::engines::Externs::with_builtins();\n"
       << "  register_externs(all);\n  return all;\n}\n\n"
+      << "const smcbip::engines::Externs& bound_externs() {\n"
+      << "  static const smcbip::engines::Externs bound = externs();\n  return bound;\n}\n\n"
       << close;
   return out.str();
 }
