@@ -18,10 +18,10 @@ namespace {
 using smcbip::engines::TimeValue;
 
 struct Mission {
-  int cycles = 40;            // flight-loop cycles
-  int cycle_ms = 10;          // length of one cycle
-  int fast_period_ms = 20;    // the heart's period after the halfway command
-  int telecommand = 7;        // the code sent halfway
+  int cycles = 40;             // flight-loop cycles
+  int cycle_ms = 10;           // length of one cycle
+  int fast_period_ms = 20;     // the heart's period after the halfway command
+  int telecommand = 7;         // the code sent halfway
   bool virtual_clock = false;  // cycles follow one another without waiting (tests)
 };
 
@@ -60,20 +60,26 @@ int fly(const Mission& mission) {
   for (int cycle = 1; cycle <= mission.cycles; ++cycle) {
     const auto due = launch + std::chrono::milliseconds(cycle * mission.cycle_ms);
     if (!mission.virtual_clock) std::this_thread::sleep_until(due);
-    const TimeValue now = std::chrono::duration_cast<std::chrono::nanoseconds>(due - launch).count();
-    if (cycle == mission.cycles / 2) {
-      heart.write(period->atom, period->slot, smcbip::engines::make_int(mission.fast_period_ms));
-      const smcbip::engines::Val code = smcbip::engines::make_int(mission.telecommand);
-      heart.feed(telecommand->atom, telecommand->port, now, {&code, 1});
-    }
+    const TimeValue now =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(due - launch).count();
     const smcbip::engines::StepOutcome outcome = heart.run_until(now);
     if (outcome.ended && outcome.end == smcbip::engines::RunEnd::Error) {
       std::cerr << "hello_flight: the component failed: " << outcome.message << "\n";
       return 1;
     }
+    // Halfway, once the model has caught up with the clock: faster beats and a telecommand.
+    if (cycle == mission.cycles / 2) {
+      const smcbip::engines::Val code = smcbip::engines::make_int(mission.telecommand);
+      if (!heart.write(period->atom, period->slot,
+                       smcbip::engines::make_int(mission.fast_period_ms)) ||
+          !heart.feed(telecommand->atom, telecommand->port, now, {&code, 1})) {
+        std::cerr << "hello_flight: the component refused the halfway command\n";
+        return 1;
+      }
+    }
   }
-  std::cout << "mission complete at " << heart.now() / 1'000'000 << " ms: "
-            << heart.read(beats->atom, beats->slot).i << " beats, last telecommand "
+  std::cout << "mission complete at " << heart.now() / 1'000'000
+            << " ms: " << heart.read(beats->atom, beats->slot).i << " beats, last telecommand "
             << heart.read(command->atom, command->slot).i << "\n";
   return 0;
 }

@@ -5,7 +5,7 @@
 #    text and JSON lines), and smcbip --compiled runs the plugin the same way;
 #  - --compiled with a model file refuses a plugin of another model (exit 65);
 #  - a --no-main project has no executable, and binds the model's extern C++ (tests/codegen/lamp),
-#    which the interpreter alone cannot run;
+#    which the interpreter alone cannot run; a host program embeds it and steps its Component;
 #  - the identity embedded in the sources is `bipc hash`'s, and it changes with an extern source.
 #
 # Usage: project_test.sh BUILD_DIR SOURCE_DIR WORK_DIR [EXTRA_CXX_FLAGS]
@@ -108,7 +108,44 @@ code=0
 "$bin/smcbip" simulate "$lamp" --root 'Top()' --seed 1 --limit 4 > /dev/null 2>&1 || code=$?
 [[ $code != 0 ]] || fail "the interpreter ran the lamp without its extern C++"
 
+# A host program embedding the --no-main library: it steps the Component and reads its data.
+mkdir -p "$work/host"
+cat > "$work/host/CMakeLists.txt" <<EOF
+cmake_minimum_required(VERSION 3.25)
+project(host LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 20)
+add_subdirectory("$work/lamp" lamp)
+add_executable(host host.cpp)
+target_compile_options(host PRIVATE -Wall -Wextra)
+target_link_libraries(host PRIVATE bip_model)
+EOF
+cat > "$work/host/host.cpp" <<'EOF'
+#include <iostream>
+
+#include "model.h"
+
+int main() {
+  bip_model::Component lamp;
+  const auto level = lamp.find_data("ROOT.lamp", "level");
+  if (!level || !lamp.start()) return 1;
+  for (int i = 0; i < 4; ++i) {
+    if (!lamp.step().stepped) return 1;
+  }
+  std::cout << bip_model::Component::model_hash() << " " << lamp.read(level->atom, level->slot).i
+            << "\n";
+  return 0;
+}
+EOF
+cmake -S "$work/host" -B "$work/host/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_FLAGS="-Werror $extra_flags" \
+  > "$work/host.log" 2>&1 && cmake --build "$work/host/build" -j2 >> "$work/host.log" 2>&1 ||
+  { cat "$work/host.log"; fail "the host program did not build"; }
+host_out=$("$work/host/build/host" 2> /dev/null) || fail "the host program failed"
+
 hash=$("$bin/bipc" hash "$lamp" --root 'Top()')
+[[ $(tail -n 1 <<<"$host_out") == "$hash 121" ]] ||
+  fail "the host program ended with '$(tail -n 1 <<<"$host_out")', not '$hash 121'"
+grep -qx "level 40" <<<"$host_out" || fail "the host program's model printed no 'level 40'"
 grep -q "kModelHash = \"$hash\"" "$work/lamp/model.h" || fail "model.h does not carry bipc hash's $hash"
 mkdir -p "$work/lamp_copy"
 cp "$src/tests/codegen/lamp/"* "$work/lamp_copy/"
