@@ -38,8 +38,9 @@ std::string project_name(const std::string& name_space);
 ///    externs, extern sources), the executable `<name>_simulate` (with main), and the MODULE
 ///    `<name>_plugin` that smcbip loads with --compiled;
 ///  - model_code.{h,cpp} (generate_cpp), model.h (the API: kModelHash, system(), model(),
-///    externs(), and Component, the model embedded in a host program), model_data.cpp (the IR as CBOR bytes), model_externs.cpp (extern functions
-///    bound to the model's C++), plugin.cpp, main.cpp (with `main`);
+///    externs(), and Component, the model embedded in a host program), model_data.cpp (the IR as
+///    CBOR bytes), model_externs.cpp (extern functions bound to the model's C++), plugin.cpp,
+///    main.cpp (with `main`);
 ///  - extern/<name> for each extern source (a source by its file name, a header as written).
 /// The hash is ir::model_hash(system, options.extern_sources). Throws ExternSourceClash when
 /// two extern files would share a name, UntranslatableCode like generate_cpp.
