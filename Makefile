@@ -8,11 +8,7 @@ ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines tests bench
 PREFIX ?= /usr/local
 
-<<<<<<< HEAD
-.PHONY: all deps build demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated format clean
-=======
-.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines format clean
->>>>>>> package
+.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated format clean
 
 all: build
 

@@ -130,7 +130,7 @@ int run_hash(const FrontendOptions& options) {
 }
 
 int run_gen(const FrontendOptions& options, const std::string& output,
-            codegen::ProjectOptions project) {
+            codegen::ProjectOptions project, bool code_only) {
   std::string error;
   if (!codegen::valid_namespace(project.code.name_space, error)) {
     std::cerr << "bipc: error: --namespace: " << error << "\n";
@@ -138,15 +138,18 @@ int run_gen(const FrontendOptions& options, const std::string& output,
   }
   FrontendResult result = run_frontend(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
-  std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
-  if (!sources) return kInputError;
-  project.extern_sources = std::move(*sources);
+  std::vector<codegen::GeneratedFile> files;
+  if (!code_only) {
+    std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
+    if (!sources) return kInputError;
+    project.extern_sources = std::move(*sources);
+  }
   project.model_file = options.file;
   project.root = options.root.empty() ? result.system->root_type : options.root;
   project.smcbip_version = SMCBIP_VERSION_TEXT;
-  std::vector<codegen::GeneratedFile> files;
   try {
-    files = codegen::generate_project(*result.system, project);
+    files = code_only ? codegen::generate_cpp(*result.system, project.code)
+                      : codegen::generate_project(*result.system, project);
   } catch (const codegen::ExternSourceClash& clash) {
     std::cerr << "bipc: error: " << clash.message << "\n";
     return kInputError;
@@ -187,7 +190,7 @@ int run(int argc, char** argv) {
   FrontendOptions gen_options;
   std::string gen_output;
   codegen::ProjectOptions gen;
-  bool no_main = false;
+  bool no_main = false, code_only = false;
   CLI::App* gen_cmd = app.add_subcommand("gen", "generate the C++ project of a root instantiation");
   register_frontend_options(*gen_cmd, gen_options);
   gen_cmd->add_option("-o,--output", gen_output, "output folder (created if needed)")->required();
@@ -196,6 +199,9 @@ int run(int argc, char** argv) {
   gen_cmd->add_flag("--no-main", no_main,
                     "a library for a host program (no executable taking smcbip simulate's "
                     "options)");
+  gen_cmd->add_flag("--code-only", code_only,
+                    "only model_code.h and model_code.cpp, for a program that holds the "
+                    "model's IR itself (engines::CompiledModel); extern sources are not read");
 
   FrontendOptions hash_options;
   CLI::App* hash = app.add_subcommand(
@@ -213,7 +219,7 @@ int run(int argc, char** argv) {
   if (dot->parsed()) return run_dot(dot_options, dot_output);
   if (gen_cmd->parsed()) {
     gen.main = !no_main;
-    return run_gen(gen_options, gen_output, gen);
+    return run_gen(gen_options, gen_output, gen, code_only);
   }
   if (hash->parsed()) return run_hash(hash_options);
   return run_ir(ir_options, ir_output, json);

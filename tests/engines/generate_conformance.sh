@@ -42,7 +42,7 @@ if [[ -d $conformance_dir ]]; then
     [[ -f $file ]] || continue
     root=${roots[$key]}
     dir=$out/models/$n
-    if ! "$bipc" gen "$file" --root "$root" -I "$(dirname -- "$file")" -o "$dir" \
+    if ! "$bipc" gen --code-only "$file" --root "$root" -I "$(dirname -- "$file")" -o "$dir" \
       --namespace "generated_conformance::m$n" 2> "$dir.err"; then
       echo "generate_conformance: bipc gen refused $key --root '$root':" >&2
       cat "$dir.err" >&2
