@@ -21,6 +21,10 @@ work=$3
 extra_flags=${4:-}
 bin=$build/bin
 compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
+# Warnings are checked in the plain build; sanitizer instrumentation makes some of the
+# compiler's flow warnings fire spuriously, so a sanitized run only builds and runs.
+werror=-Werror
+[[ -n $extra_flags ]] && werror=
 
 fail() {
   echo "FAIL: $*" >&2
@@ -38,11 +42,11 @@ generate() {
   shift 3
   "$bin/bipc" gen "$file" --root "$root" -o "$work/$name" "$@" || fail "bipc gen $file"
   cmake -S "$work/$name" -B "$work/$name/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
-    -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_FLAGS="-Werror $extra_flags" \
+    -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_FLAGS="$werror $extra_flags" \
     > "$work/$name.configure.log" 2>&1 || { cat "$work/$name.configure.log"; fail "configure $name"; }
   cmake --build "$work/$name/build" -j2 > "$work/$name.build.log" 2>&1 ||
     { cat "$work/$name.build.log"; fail "build $name"; }
-  if grep -q "warning:" "$work/$name.build.log"; then
+  if [[ -n $werror ]] && grep -q "warning:" "$work/$name.build.log"; then
     cat "$work/$name.build.log"
     fail "warnings building $name"
   fi
@@ -137,7 +141,7 @@ int main() {
 }
 EOF
 cmake -S "$work/host" -B "$work/host/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
-  -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_FLAGS="-Werror $extra_flags" \
+  -DCMAKE_CXX_COMPILER="$compiler" -DCMAKE_CXX_FLAGS="$werror $extra_flags" \
   > "$work/host.log" 2>&1 && cmake --build "$work/host/build" -j2 >> "$work/host.log" 2>&1 ||
   { cat "$work/host.log"; fail "the host program did not build"; }
 host_out=$("$work/host/build/host" 2> /dev/null) || fail "the host program failed"
