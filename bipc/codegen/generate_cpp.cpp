@@ -17,11 +17,6 @@ constexpr const char* kFactoryDeclaration =
     "functions,\n"
     "    smcbip::engines::CallContext& call, const smcbip::engines::GuardBounds* guard_bounds)";
 
-/// Each namespace of a path opened, and the matching closing text.
-std::pair<std::string, std::string> namespace_lines(const std::string& name_space) {
-  return {"namespace " + name_space + " {\n", "}  // namespace " + name_space + "\n"};
-}
-
 std::string header(const GenerateOptions& options) {
   const auto [open, close] = namespace_lines(options.name_space);
   std::ostringstream out;
@@ -124,6 +119,10 @@ bool reserved(const std::string& id) {
 }
 
 }  // namespace
+
+std::pair<std::string, std::string> namespace_lines(const std::string& name_space) {
+  return {"namespace " + name_space + " {\n", "}  // namespace " + name_space + "\n"};
+}
 
 bool valid_namespace(const std::string& name_space, std::string& error) {
   std::size_t start = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bipc/ir/ir.h"
@@ -19,6 +20,9 @@ struct GeneratedFile {
   std::string name;  // relative to the output folder
   std::string text;
 };
+
+/// The text opening namespace `name_space` (a path), and the matching closing text.
+std::pair<std::string, std::string> namespace_lines(const std::string& name_space);
 
 /// Whether `name_space` is a valid C++ namespace path (identifiers joined by `::`, no reserved
 /// identifiers); otherwise says why in `error`.

@@ -1,6 +1,7 @@
 // The files of a generated project besides the model's code (see generate_project.h).
 #include "bipc/codegen/generate_project.h"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -40,10 +41,6 @@ std::string comment_text(const std::string& text) {
   std::string out;
   for (const char ch : text) out += ch == '\n' || ch == '\r' ? ' ' : ch;
   return out;
-}
-
-std::pair<std::string, std::string> namespace_lines(const std::string& name_space) {
-  return {"namespace " + name_space + " {\n", "}  // namespace " + name_space + "\n"};
 }
 
 std::string model_header(const std::string& hash, const ProjectOptions& options) {
@@ -141,26 +138,15 @@ std::string cpp_type(ir::ValueKind kind) {
   }
 }
 
+/// The ValueKind enumerator of `kind` (`Int` for int): its BIP name, capitalised.
 std::string kind_name(ir::ValueKind kind) {
-  switch (kind) {
-    case ir::ValueKind::Void:
-      return "Void";
-    case ir::ValueKind::Bool:
-      return "Bool";
-    case ir::ValueKind::Int:
-      return "Int";
-    case ir::ValueKind::Float:
-      return "Float";
-    case ir::ValueKind::String:
-      return "String";
-    case ir::ValueKind::Extern:
-      return "Extern";
-  }
-  return "Void";
+  std::string name = ir::value_kind_name(kind);
+  name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  return name;
 }
 
-/// The registration of one extern function, or a comment saying why it has none.
-std::string extern_binding(const ir::ExternFunction& f) {
+/// The registration of one extern function (`binds` set), or a comment saying why it has none.
+std::string extern_binding(const ir::ExternFunction& f, bool& binds) {
   std::string kinds, args;
   bool bindable = !f.is_operator;
   for (std::size_t i = 0; i < f.params.size(); ++i) {
@@ -176,6 +162,7 @@ std::string extern_binding(const ir::ExternFunction& f) {
     return "  // " + comment_text(f.name) +
            ": extern types or operators are bound by the host (Externs::add)\n";
   }
+  binds = true;
   std::ostringstream out;
   out << "  externs.add_raw(" << string_literal(f.name) << ", {" << kinds
       << "}, K::" << kind_name(result) << ",\n"
@@ -201,11 +188,12 @@ std::string model_externs(const ir::System& system, const ProjectOptions& option
     out << "#include " << string_literal(header) << "\n";
   }
   std::string bindings;
+  bool binds = false;  // the aliases the bindings use are declared only then (no unused alias)
   for (const ir::ExternFunction& f : system.functions) {
     if (!f.is_operator && ir::is_builtin_function(f.name)) continue;
-    bindings += extern_binding(f);
+    bindings += extern_binding(f, binds);
   }
-  if (bindings.find("add_raw") != std::string::npos) {
+  if (binds) {
     bindings =
         "  namespace se = smcbip::engines;\n  using K = smcbip::bipc::ir::ValueKind;\n" + bindings;
   }
