@@ -1,10 +1,33 @@
 // The interpreted model.
 #include "engines/model.h"
 
+#include <string>
+
 #include "engines/interpreter/clock_bounds.h"
 #include "engines/interpreter/code_eval.h"
 
 namespace smcbip::engines {
+
+namespace {
+
+[[noreturn]] void not_compiled(bipc::ir::Index type) {
+  throw CodeFault{"atom type " + std::to_string(type) + " has no compiled steps"};
+}
+
+}  // namespace
+
+bipc::ir::Index ModelCode::atom_offers(bipc::ir::Index type, const std::uint8_t*, const Frame&,
+                                       std::optional<AtomPortValue>*) {
+  not_compiled(type);
+}
+
+bipc::ir::Index ModelCode::atom_internal(bipc::ir::Index type, const std::uint8_t*, const Frame&) {
+  not_compiled(type);
+}
+
+bool ModelCode::atom_fire(bipc::ir::Index type, bipc::ir::Index, std::uint8_t*, const Frame&) {
+  not_compiled(type);
+}
 
 InterpretedModel::InterpretedModel(const bipc::ir::System& system)
     : system_(system), guard_bounds_(std::make_unique<const GuardBounds>(system)) {}

@@ -4,7 +4,9 @@
 // it, whether the code is interpreted from the IR or compiled from generated C++.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
@@ -16,6 +18,18 @@ namespace smcbip::engines {
 struct Frame;
 struct BoundFunctions;
 class GuardBounds;
+
+/// A timing constraint: when an item may execute, and how urgent it is.
+struct Constraint {
+  Interval interval;
+  bipc::Urgency urgency = bipc::Urgency::Lazy;
+};
+
+/// What an atom's port offers in the current state.
+struct AtomPortValue {
+  bipc::ir::Index transition = bipc::ir::kNone;
+  Constraint constraint;
+};
 
 /// Runs a model's code over one frame (an atom's or a connector's slots, and the date). One per
 /// thread: an implementation may keep a stack. Faults (division by zero, a missing extern) are
@@ -34,6 +48,28 @@ class ModelCode {
   bool holds(const bipc::ir::Code& code, const Frame& frame) {
     return code.empty() || evaluate(code, frame).b;
   }
+
+  // Compiled atom steps: generated code may take over an atom type's transitions as straight
+  // C++ (the places it reads and writes are the atom's own marking, `marking[p]` for place p).
+  // The engines keep the rest of the semantics (resume, invariants, priorities, errors).
+
+  /// Whether atom_offers, atom_internal and atom_fire answer for atom type `type`.
+  virtual bool compiles_atom_type(bipc::ir::Index /*type*/) const { return false; }
+  /// Sets `offers[port]` for every labelled transition enabled in `marking` whose guard holds at
+  /// some date (the offers arrive reset), examined as the engines do: from the one marked place
+  /// of a state machine, else all, in declaration order. Returns bipc::ir::kNone, or the port
+  /// of a second enabled transition (a non-deterministic choice; the offers are then partial).
+  virtual bipc::ir::Index atom_offers(bipc::ir::Index type, const std::uint8_t* marking,
+                                      const Frame& frame, std::optional<AtomPortValue>* offers);
+  /// The unlabelled internal transition enabled in `marking` whose guard holds now:
+  /// bipc::ir::kNone when none, kSeveralTransitions when more than one.
+  virtual bipc::ir::Index atom_internal(bipc::ir::Index type, const std::uint8_t* marking,
+                                        const Frame& frame);
+  /// Moves the tokens of `transition` and runs its action; false, before the action, when a
+  /// token would land on a marked place (the net is not 1-safe).
+  virtual bool atom_fire(bipc::ir::Index type, bipc::ir::Index transition, std::uint8_t* marking,
+                         const Frame& frame);
+  static constexpr bipc::ir::Index kSeveralTransitions = bipc::ir::kNone - 1;
 };
 
 /// A runnable model: its structure, and code runners for it.

@@ -58,6 +58,9 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
                            layout.atom_clocks[a], layout.clock_units.data() + layout.atom_clocks[a],
                            has_clocks});
   }
+  for (Index t = 0; t < system_.atom_types.size(); ++t) {
+    compiled_type_.push_back(eval_.compiles_atom_type(t) ? 1 : 0);
+  }
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
   bounding_atoms_.reset(system_.atoms.size());
   resuming_atoms_.reset(system_.atoms.size());
@@ -203,19 +206,25 @@ bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition
   const bipc::ir::Transition& t = type.transitions[transition];
   const std::size_t base = layout_.atom_places[atom];
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
-  for (Index p : t.from) state_.marking[base + p] = 0;
-  for (Index p : t.to) {
-    if (state_.marking[base + p]) {
-      const bool labelled = label != kNone && !type.ports[label].is_extern;
-      return s.fail(2,
-                    "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
-                        (labelled ? "executing a transition labelled by " + type.ports[label].name
-                                  : std::string("executing an internal transition")) +
-                        ")");
+  const auto not_safe = [&] {
+    const bool labelled = label != kNone && !type.ports[label].is_extern;
+    return s.fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
+                         (labelled ? "executing a transition labelled by " + type.ports[label].name
+                                   : std::string("executing an internal transition")) +
+                         ")");
+  };
+  if (compiled_type_[system_.atoms[atom].type]) {
+    if (!s.eval.atom_fire(system_.atoms[atom].type, transition, &state_.marking[base], f)) {
+      return not_safe();
     }
-    state_.marking[base + p] = 1;
+  } else {
+    for (Index p : t.from) state_.marking[base + p] = 0;
+    for (Index p : t.to) {
+      if (state_.marking[base + p]) return not_safe();
+      state_.marking[base + p] = 1;
+    }
+    s.eval.execute(t.action, f);
   }
-  s.eval.execute(t.action, f);
   if (t.resume) {
     state_.resume_pending[atom] = 1;
     state_.resume_interval[atom] = s.eval.holds_when(t.resume->guard, f);
@@ -237,27 +246,35 @@ inline bool Runtime::from_marked(const TransitionEntry& entry,
 }
 
 bool Runtime::run_internal_transitions(const AtomScratch& s, Index atom) {
-  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
-  const std::size_t base = layout_.atom_places[atom];
-  const std::vector<TransitionEntry>& internal =
-      layout_.internal_transitions[system_.atoms[atom].type];
-  if (internal.empty()) return true;
+  if (layout_.internal_transitions[system_.atoms[atom].type].empty()) return true;
   const Frame f = atom_frame(s, atom);
   for (;;) {
-    Index enabled = kNone;
-    for (const TransitionEntry& entry : internal) {
-      const Index t = entry.transition;
-      const bipc::ir::Transition& tr = type.transitions[t];
-      if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, f)) continue;
-      if (enabled != kNone) {
-        return s.fail(1, "non-deterministic choice between internal transitions in " +
-                             layout_.atom_names[atom] + "!");
-      }
-      enabled = t;
+    const Index enabled = enabled_internal_transition(s, atom, f);
+    if (enabled == ModelCode::kSeveralTransitions) {
+      return s.fail(1, "non-deterministic choice between internal transitions in " +
+                           layout_.atom_names[atom] + "!");
     }
     if (enabled == kNone) return true;
     if (!fire_transition(s, atom, enabled, kNone, f)) return false;
   }
+}
+
+Index Runtime::enabled_internal_transition(const AtomScratch& s, Index atom, const Frame& f) {
+  const Index type_index = system_.atoms[atom].type;
+  const std::size_t base = layout_.atom_places[atom];
+  if (compiled_type_[type_index]) {
+    return s.eval.atom_internal(type_index, &state_.marking[base], f);
+  }
+  const AtomType& type = system_.atom_types[type_index];
+  Index enabled = kNone;
+  for (const TransitionEntry& entry : layout_.internal_transitions[type_index]) {
+    const Index t = entry.transition;
+    const bipc::ir::Transition& tr = type.transitions[t];
+    if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, f)) continue;
+    if (enabled != kNone) return ModelCode::kSeveralTransitions;
+    enabled = t;
+  }
+  return enabled;
 }
 
 bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
@@ -267,6 +284,11 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Index type_index = system_.atoms[atom].type;
+  if (compiled_type_[type_index]) {
+    const Index port = s.eval.atom_offers(type_index, &state_.marking[base], f, values);
+    if (port != kNone) return non_deterministic_offers(s, atom, port);
+    return type.priorities.empty() || apply_atom_priorities(s, atom, f);
+  }
   // A state machine looks only at the transitions from its one marked place: the same ones,
   // in the same order, that are enabled by the marking.
   const std::vector<std::vector<TransitionEntry>>& from_place =
@@ -287,17 +309,25 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
       return s.eval.holds_when(tr.guard, f);
     }();
     if (when.empty()) continue;
-    if (values[tr.port]) {
-      if (type.ports[tr.port].is_extern) {
-        return s.fail(1, "non-deterministic choice between internal transitions in " +
-                             layout_.atom_names[atom] + "!");
-      }
-      return s.fail(1, "non-deterministic choice between transitions labelled by " +
-                           type.ports[tr.port].name + " in " + layout_.atom_names[atom] + "!");
-    }
+    if (values[tr.port]) return non_deterministic_offers(s, atom, tr.port);
     values[tr.port] = AtomPortValue{t, {when, tr.urgency}};
   }
-  if (type.priorities.empty()) return true;
+  return type.priorities.empty() || apply_atom_priorities(s, atom, f);
+}
+
+bool Runtime::non_deterministic_offers(const AtomScratch& s, Index atom, Index port) {
+  const bipc::ir::Port& p = system_.atom_types[system_.atoms[atom].type].ports[port];
+  if (p.is_extern) {
+    return s.fail(1, "non-deterministic choice between internal transitions in " +
+                         layout_.atom_names[atom] + "!");
+  }
+  return s.fail(1, "non-deterministic choice between transitions labelled by " + p.name + " in " +
+                       layout_.atom_names[atom] + "!");
+}
+
+bool Runtime::apply_atom_priorities(const AtomScratch& s, Index atom, const Frame& f) {
+  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+  std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
   if (!check_atom_priority_cycle(s, atom)) return false;
   // A port is disabled when a chain of active rules from it ends at an enabled port.
   AtomPriorityBuffers& b = *s.priorities;

@@ -27,12 +27,6 @@
 
 namespace smcbip::engines {
 
-/// A timing constraint: when an item may execute, and how urgent it is.
-struct Constraint {
-  Interval interval;
-  bipc::Urgency urgency = bipc::Urgency::Lazy;
-};
-
 /// The complete state of a run (copyable: the explorer keeps states).
 struct RunState {
   TimeValue now = 0;
@@ -41,12 +35,6 @@ struct RunState {
   std::vector<ClockState> clocks;
   std::vector<std::uint8_t> resume_pending;  // per atom
   std::vector<Interval> resume_interval;     // per atom, absolute
-};
-
-/// What an atom's port offers in the current state.
-struct AtomPortValue {
-  Index transition = bipc::ir::kNone;
-  Constraint constraint;
 };
 
 /// One value a connector port parameter may take: an atom port's offer or one enabled
@@ -252,10 +240,17 @@ class Runtime {
   bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
   /// `f`: the atom's frame (atom_frame).
   bool update_atom(const AtomScratch& s, Index atom, const Frame& f);
+  /// The error of two enabled transitions labelled by `port` (update_atom).
+  bool non_deterministic_offers(const AtomScratch& s, Index atom, Index port);
+  /// Withdraws the offers of ports that the atom type's active priority rules disable
+  /// (update_atom, after the offers; `f`: the atom's frame).
+  bool apply_atom_priorities(const AtomScratch& s, Index atom, const Frame& f);
   bool run_internal_transitions(Index atom) {
     return run_internal_transitions(main_scratch(), atom);
   }
   bool run_internal_transitions(const AtomScratch& s, Index atom);
+  /// The one internal transition enabled now, kNone, or ModelCode::kSeveralTransitions.
+  Index enabled_internal_transition(const AtomScratch& s, Index atom, const Frame& f);
   bool fire_transition(const AtomScratch& s, Index atom, Index transition, Index port_label,
                        const Frame& f);
   /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
@@ -396,6 +391,8 @@ class Runtime {
     bool has_clocks = false;
   };
   std::vector<AtomSlots> atom_slots_;
+  // Per atom type: whether the model's code compiles its steps (ModelCode::atom_offers...).
+  std::vector<std::uint8_t> compiled_type_;
   // Per atom port (flattened by atom, port): its offer, if any.
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;

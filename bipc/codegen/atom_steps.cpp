@@ -1,0 +1,145 @@
+// Atom steps as straight C++: the transitions of each atom type examined in the order the
+// engines' Runtime examines them, with the same outcomes (offers, conflicts, unsafe nets).
+#include "bipc/codegen/atom_steps.h"
+
+#include <sstream>
+
+namespace smcbip::bipc::codegen {
+
+namespace {
+
+/// As the engines' layout decides it: one initial place, every transition from one place to one.
+bool state_machine(const ir::AtomType& type) {
+  if (type.initial_places.size() != 1) return false;
+  for (const ir::Transition& t : type.transitions) {
+    if (t.from.size() != 1 || t.to.size() != 1) return false;
+  }
+  return true;
+}
+
+/// `m[a] && m[b]...` for the transition's `from` places (`true` when it has none).
+std::string marked(const ir::Transition& t) {
+  if (t.from.empty()) return "true";
+  std::string text;
+  for (ir::Index p : t.from) text += (text.empty() ? "m[" : " && m[") + std::to_string(p) + "]";
+  return text;
+}
+
+std::string code_call(const ir::Code& code) { return "code_" + std::to_string(code.id) + "(c, f)"; }
+
+/// The dates at which the guard of transition `t` of type `type_index` holds, as ModelCode's
+/// holds_when answers for the generated code: plain guards hold at all dates or none; guards in
+/// atoms with clocks go to the time-set evaluator.
+std::string guard_window(const ir::AtomType& type, ir::Index type_index, ir::Index t) {
+  const ir::Code& guard = type.transitions[t].guard;
+  if (guard.empty()) return "se::Interval::all()";
+  if (type.clocks.empty()) {
+    return code_call(guard) + ".b ? se::Interval::all() : se::Interval::none()";
+  }
+  return "c.timed.holds_when(c.system.atom_types[" + std::to_string(type_index) + "].transitions[" +
+         std::to_string(t) + "].guard, f)";
+}
+
+void offer(std::ostream& out, const ir::AtomType& type, ir::Index type_index, ir::Index t,
+           const std::string& indent) {
+  const ir::Transition& tr = type.transitions[t];
+  out << indent << "{  // " << type.ports[tr.port].name << "\n"
+      << indent << "  const se::Interval w = " << guard_window(type, type_index, t) << ";\n"
+      << indent << "  if (!w.empty()) {\n"
+      << indent << "    if (v[" << tr.port << "]) return " << tr.port << ";\n"
+      << indent << "    v[" << tr.port << "] = se::AtomPortValue{" << t << ", {w, "
+      << "static_cast<ir::Urgency>(" << static_cast<unsigned>(tr.urgency) << ")}};\n"
+      << indent << "  }\n"
+      << indent << "}\n";
+}
+
+void offers_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
+  out << "[[maybe_unused]] ir::Index offers_" << type_index
+      << "([[maybe_unused]] Context& c, [[maybe_unused]] const std::uint8_t* m,\n"
+      << "    [[maybe_unused]] const se::Frame& f, [[maybe_unused]] "
+         "std::optional<se::AtomPortValue>* "
+         "v) {\n";
+  if (state_machine(type)) {
+    // Only the transitions from the one marked place (the last one if none is).
+    out << "  std::size_t marked = 0;\n"
+        << "  while (marked + 1 < " << type.places.size() << " && !m[marked]) ++marked;\n"
+        << "  if (!m[marked]) return ir::kNone;\n"
+        << "  switch (marked) {\n";
+    for (ir::Index p = 0; p < type.places.size(); ++p) {
+      out << "    case " << p << ":  // " << type.places[p] << "\n";
+      for (ir::Index t = 0; t < type.transitions.size(); ++t) {
+        const ir::Transition& tr = type.transitions[t];
+        if (tr.port != ir::kNone && tr.from.front() == p) offer(out, type, type_index, t, "      ");
+      }
+      out << "      break;\n";
+    }
+    out << "    default:\n      break;\n  }\n";
+  } else {
+    for (ir::Index t = 0; t < type.transitions.size(); ++t) {
+      const ir::Transition& tr = type.transitions[t];
+      if (tr.port == ir::kNone) continue;
+      out << "  if (" << marked(tr) << ")\n";
+      offer(out, type, type_index, t, "  ");
+    }
+  }
+  out << "  return ir::kNone;\n}\n\n";
+}
+
+void internal_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
+  out << "[[maybe_unused]] ir::Index internal_" << type_index
+      << "([[maybe_unused]] Context& c, [[maybe_unused]] const std::uint8_t* m,\n"
+      << "    [[maybe_unused]] const se::Frame& f) {\n"
+      << "  ir::Index enabled = ir::kNone;\n";
+  for (ir::Index t = 0; t < type.transitions.size(); ++t) {
+    const ir::Transition& tr = type.transitions[t];
+    if (tr.port != ir::kNone) continue;
+    out << "  if (" << marked(tr);
+    if (!tr.guard.empty()) out << " && " << code_call(tr.guard) << ".b";
+    out << ") {\n"
+        << "    if (enabled != ir::kNone) return se::ModelCode::kSeveralTransitions;\n"
+        << "    enabled = " << t << ";\n  }\n";
+  }
+  out << "  return enabled;\n}\n\n";
+}
+
+void fire_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
+  out << "[[maybe_unused]] bool fire_" << type_index
+      << "([[maybe_unused]] Context& c, ir::Index t, [[maybe_unused]] std::uint8_t* m,\n"
+      << "    [[maybe_unused]] const se::Frame& f) {\n"
+      << "  switch (t) {\n";
+  for (ir::Index t = 0; t < type.transitions.size(); ++t) {
+    const ir::Transition& tr = type.transitions[t];
+    out << "    case " << t << ":\n";
+    for (ir::Index p : tr.from) out << "      m[" << p << "] = 0;\n";
+    for (ir::Index p : tr.to) {
+      out << "      if (m[" << p << "]) return false;\n      m[" << p << "] = 1;\n";
+    }
+    if (!tr.action.empty()) out << "      " << code_call(tr.action) << ";\n";
+    out << "      return true;\n";
+  }
+  out << "    default:\n      break;\n  }\n"
+      << "  throw se::CodeFault{\"transition \" + std::to_string(t) + \" is not one of atom type "
+      << type_index << "\"};\n}\n\n";
+}
+
+}  // namespace
+
+AtomStepFunctions atom_step_functions(const ir::System& system) {
+  AtomStepFunctions functions;
+  std::ostringstream out;
+  for (ir::Index k = 0; k < system.atom_types.size(); ++k) {
+    const ir::AtomType& type = system.atom_types[k];
+    out << "// Atom type " << type.name << ".\n\n";
+    offers_function(out, type, k);
+    internal_function(out, type, k);
+    fire_function(out, type, k);
+    const std::string label = "      case " + std::to_string(k) + ": return ";
+    functions.offers_cases += label + "offers_" + std::to_string(k) + "(c_, m, f, v);\n";
+    functions.internal_cases += label + "internal_" + std::to_string(k) + "(c_, m, f);\n";
+    functions.fire_cases += label + "fire_" + std::to_string(k) + "(c_, t, m, f);\n";
+  }
+  functions.definitions = out.str();
+  return functions;
+}
+
+}  // namespace smcbip::bipc::codegen
