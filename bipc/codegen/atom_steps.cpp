@@ -4,6 +4,8 @@
 
 #include <sstream>
 
+#include "bipc/ir/clock_guard.h"
+
 namespace smcbip::bipc::codegen {
 
 namespace {
@@ -36,8 +38,26 @@ std::string guard_window(const ir::AtomType& type, ir::Index type_index, ir::Ind
   if (type.clocks.empty()) {
     return code_call(guard) + ".b ? se::Interval::all() : se::Interval::none()";
   }
-  return "c.timed.holds_when(c.system.atom_types[" + std::to_string(type_index) + "].transitions[" +
-         std::to_string(t) + "].guard, f)";
+  const std::string interpreted = "c.timed.holds_when(c.system.atom_types[" +
+                                  std::to_string(type_index) + "].transitions[" +
+                                  std::to_string(t) + "].guard, f)";
+  const auto comparisons = ir::clock_comparisons(guard);
+  if (!comparisons) return interpreted;
+  // Clock bounds by literals: their dates in integers, unless out of the exact range (then the
+  // time-set evaluator's floating point, as the engines' ClockBounds does).
+  std::string exact;
+  for (const ir::ClockComparison& comparison : *comparisons) {
+    if (!comparison.small_literal) return interpreted;
+    const std::string clock = std::to_string(comparison.clock);
+    exact += std::string(exact.empty() ? "" : " &&\n            ") +
+             "se::narrow_to_clock_bound(static_cast<ir::Op>(" +
+             std::to_string(static_cast<unsigned>(comparison.clock_op)) + "), INT64_C(" +
+             std::to_string(*comparison.small_literal) + "), f.clocks[" + clock +
+             "], f.clock_units[" + clock + "], f.now, dates)";
+  }
+  return "[&] {\n          se::Interval dates = se::Interval::all();\n          if (" + exact +
+         ") {\n            return dates;\n          }\n          return " + interpreted +
+         ";\n        }()";
 }
 
 void offer(std::ostream& out, const ir::AtomType& type, ir::Index type_index, ir::Index t,

@@ -2,6 +2,7 @@
 # model hash.
 list(APPEND BIPC_SOURCES
   ir/ir.cpp
+  ir/clock_guard.cpp
   ir/ir_json.cpp
   ir/ir_text.cpp
   ir/ir_dot.cpp

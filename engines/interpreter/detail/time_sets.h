@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bipc/ir/clock_guard.h"
 #include "bipc/ir/ir.h"
 #include "engines/time_value.h"
 
@@ -14,14 +15,7 @@ using bipc::ir::Op;
 
 inline Interval relative_set(bool holds) { return holds ? Interval::all() : Interval::none(); }
 
-/// The comparison with its sides swapped (`a < b` is `b > a`).
-inline Op turned_around(Op op) {
-  return op == Op::Lt   ? Op::Gt
-         : op == Op::Le ? Op::Ge
-         : op == Op::Gt ? Op::Lt
-         : op == Op::Ge ? Op::Le
-                        : op;
-}
+using bipc::ir::turned_around;
 
 /// {d | a + b*d op c}, on integer nanoseconds.
 inline Interval solve(Op op, double a, double b, double c) {
