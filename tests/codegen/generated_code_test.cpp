@@ -9,6 +9,7 @@
 #include "engines/engines.h"
 #include "engines/interpreter/code_eval.h"
 #include "generated_models.h"
+#include "run_trace.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::tests {
@@ -40,15 +41,7 @@ class CountingCode final : public engines::ModelCode {
 };
 
 std::string trace_of(const engines::Model& model, EngineKind engine, std::uint64_t seed) {
-  engines::SimulateOptions options;
-  options.engine = engine;
-  options.threads = 2;
-  options.seed = seed;
-  options.limit = 400;
-  engines::Simulator simulator(model, options, engines::Externs::with_builtins());
-  std::ostringstream out;
-  const engines::RunResult result = simulator.run(0, engines::RunStreams{out, out});
-  return out.str() + "\nexit " + std::to_string(result.code);
+  return run_trace(model, engine, seed, 400);
 }
 
 class GeneratedCode : public ::testing::TestWithParam<GeneratedModel> {};

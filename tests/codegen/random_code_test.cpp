@@ -8,6 +8,7 @@
 
 #include "engines/engines.h"
 #include "random_models.h"
+#include "run_trace.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::tests {
@@ -15,17 +16,9 @@ namespace {
 
 using engines::EngineKind;
 
-std::string run_trace(const engines::Model& model, EngineKind engine, std::uint64_t seed) {
-  engines::SimulateOptions options;
-  options.engine = engine;
-  options.threads = 2;
-  options.parallel_min_work = 0;  // the multithread engine fires atoms on its threads
-  options.seed = seed;
-  options.limit = 300;
-  engines::Simulator simulator(model, options, engines::Externs::with_builtins());
-  std::ostringstream out;
-  const engines::RunResult result = simulator.run(0, engines::RunStreams{out, out});
-  return out.str() + "\nexit " + std::to_string(result.code);
+std::string trace_of(const engines::Model& model, EngineKind engine, std::uint64_t seed) {
+  // Atoms fire on the multithread engine's threads whatever their work.
+  return run_trace(model, engine, seed, 300, 0);
 }
 
 class GeneratedRandomCode : public ::testing::TestWithParam<GeneratedRandomModel> {};
@@ -39,8 +32,8 @@ TEST_P(GeneratedRandomCode, RunsLikeTheInterpretedModel) {
   for (EngineKind engine :
        {EngineKind::Reference, EngineKind::Optimised, EngineKind::Multithread}) {
     for (std::uint64_t seed : {1, 2}) {
-      const std::string expected = run_trace(interpreted, engine, seed);
-      EXPECT_EQ(run_trace(compiled, engine, seed), expected)
+      const std::string expected = trace_of(interpreted, engine, seed);
+      EXPECT_EQ(trace_of(compiled, engine, seed), expected)
           << "engine " << static_cast<int>(engine) << ", run seed " << seed;
     }
   }
@@ -53,7 +46,7 @@ TEST(GeneratedRandomModels, MostRunToTheLimit) {
     const std::optional<bipc::ir::System> system = load_model(generated.file, "Root()");
     ASSERT_TRUE(system) << generated.file;
     const std::string trace =
-        run_trace(engines::InterpretedModel(*system), EngineKind::Optimised, 1);
+        trace_of(engines::InterpretedModel(*system), EngineKind::Optimised, 1);
     if (trace.find("reached limit") != std::string::npos) ++lively;
   }
   EXPECT_GE(3 * lively, 2 * generated_random_models().size());
