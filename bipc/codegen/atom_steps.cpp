@@ -10,15 +10,6 @@ namespace smcbip::bipc::codegen {
 
 namespace {
 
-/// As the engines' layout decides it: one initial place, every transition from one place to one.
-bool state_machine(const ir::AtomType& type) {
-  if (type.initial_places.size() != 1) return false;
-  for (const ir::Transition& t : type.transitions) {
-    if (t.from.size() != 1 || t.to.size() != 1) return false;
-  }
-  return true;
-}
-
 /// `m[a] && m[b]...` for the transition's `from` places (`true` when it has none).
 std::string marked(const ir::Transition& t) {
   if (t.from.empty()) return "true";
@@ -30,8 +21,9 @@ std::string marked(const ir::Transition& t) {
 std::string code_call(const ir::Code& code) { return "code_" + std::to_string(code.id) + "(c, f)"; }
 
 /// The dates at which the guard of transition `t` of type `type_index` holds, as ModelCode's
-/// holds_when answers for the generated code: plain guards hold at all dates or none; guards in
-/// atoms with clocks go to the time-set evaluator.
+/// holds_when answers for the generated code: plain guards hold at all dates or none; clock
+/// bounds by literals are narrowed in straight C++; other guards in atoms with clocks go to the
+/// time-set evaluator.
 std::string guard_window(const ir::AtomType& type, ir::Index type_index, ir::Index t) {
   const ir::Code& guard = type.transitions[t].guard;
   if (guard.empty()) return "se::Interval::all()";
@@ -79,7 +71,7 @@ void offers_function(std::ostream& out, const ir::AtomType& type, ir::Index type
       << "    [[maybe_unused]] const se::Frame& f, [[maybe_unused]] "
          "std::optional<se::AtomPortValue>* "
          "v) {\n";
-  if (state_machine(type)) {
+  if (ir::is_state_machine(type)) {
     // Only the transitions from the one marked place (the last one if none is).
     out << "  std::size_t marked = 0;\n"
         << "  while (marked + 1 < " << type.places.size() << " && !m[marked]) ++marked;\n"

@@ -8,6 +8,14 @@ std::string last_component(const std::string& path) {
   return dot == std::string::npos ? path : path.substr(dot + 1);
 }
 
+bool is_state_machine(const AtomType& type) {
+  if (type.initial_places.size() != 1) return false;
+  for (const Transition& t : type.transitions) {
+    if (t.from.size() != 1 || t.to.size() != 1) return false;
+  }
+  return true;
+}
+
 const char* value_kind_name(ValueKind kind) {
   switch (kind) {
     case ValueKind::Void:

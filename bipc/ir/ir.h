@@ -401,6 +401,10 @@ void number_code(System& system);
 /// The last component of a dotted path or qualified name: "a.b.c" -> "c".
 std::string last_component(const std::string& path);
 
+/// Whether the atom type's net is a state machine: one initial place and every transition from
+/// one place to one place, so that exactly one place is marked at any time.
+bool is_state_machine(const AtomType& type);
+
 /// The BIP name of a value kind: "void", "bool", "int", "float", "string", "extern".
 const char* value_kind_name(ValueKind kind);
 

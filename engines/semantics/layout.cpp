@@ -233,11 +233,7 @@ std::string build_layout(const System& system, Layout& layout) {
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
     }
     auto& from_place = layout.labelled_from_place.emplace_back();
-    bool state_machine = type.initial_places.size() == 1;
-    for (const bipc::ir::Transition& transition : type.transitions) {
-      state_machine = state_machine && transition.from.size() == 1 && transition.to.size() == 1;
-    }
-    if (!state_machine) continue;
+    if (!bipc::ir::is_state_machine(type)) continue;
     from_place.resize(type.places.size());
     for (const TransitionEntry& entry : labelled) from_place[entry.first_place].push_back(entry);
   }

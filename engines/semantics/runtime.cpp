@@ -213,8 +213,8 @@ bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition
                                    : std::string("executing an internal transition")) +
                          ")");
   };
-  if (compiled_type_[system_.atoms[atom].type]) {
-    if (!s.eval.atom_fire(system_.atoms[atom].type, transition, &state_.marking[base], f)) {
+  if (const Index type_index = system_.atoms[atom].type; compiled_type_[type_index]) {
+    if (!s.eval.atom_fire(type_index, transition, &state_.marking[base], f)) {
       return not_safe();
     }
   } else {
