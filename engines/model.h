@@ -18,6 +18,27 @@ namespace smcbip::engines {
 struct Frame;
 struct BoundFunctions;
 class GuardBounds;
+struct Layout;
+struct RunState;
+struct StepInfo;
+class RandomStream;
+
+/// A step path compiled together with a model's code (engines/semantics/flat_steps.h): it takes
+/// over a run the engines started and makes the steps the optimised engine would make, with the
+/// same random draws, for the models it covers. It reports nothing but its steps: any state it
+/// does not cover (an error of the model among them) ends its part of the run as Beyond, and the
+/// engines replay the run from its start to find out what happens there.
+class CompiledSteps {
+ public:
+  enum class Outcome : std::uint8_t { Fired, Deadlock, Limit, Beyond };
+  virtual ~CompiledSteps() = default;
+  /// Takes over the run in `state` (initialised, nothing fired) drawing from `random`; `asap`
+  /// and `first_enabled` are the scheduling options. False when this state is not covered.
+  virtual bool begin(RunState& state, RandomStream& random, bool asap, bool first_enabled) = 0;
+  /// Decides and fires the next step (`info` tells which); Deadlock when nothing is enabled,
+  /// else Limit when `at_limit`.
+  virtual Outcome step(bool at_limit, StepInfo& info) = 0;
+};
 
 /// A timing constraint: when an item may execute, and how urgent it is.
 struct Constraint {
@@ -70,6 +91,13 @@ class ModelCode {
   virtual bool atom_fire(bipc::ir::Index type, bipc::ir::Index transition, std::uint8_t* marking,
                          const Frame& frame);
   static constexpr bipc::ir::Index kSeveralTransitions = bipc::ir::kNone - 1;
+
+  /// The compiled step path over this code for `system` laid out as `layout`, if the model
+  /// has one and it covers the system (nullptr otherwise). The code must outlive it.
+  virtual std::unique_ptr<CompiledSteps> make_steps(const bipc::ir::System& /*system*/,
+                                                    const Layout& /*layout*/) {
+    return nullptr;
+  }
 };
 
 /// A runnable model: its structure, and code runners for it.

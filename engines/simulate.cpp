@@ -65,7 +65,8 @@ class Simulation {
         verbose_(!options_.silent && options_.trace == TraceFormat::Text),
         picker_(streams.trace, streams.input, steps_, verbose_),
         scheduler_(shared, run_index, streams.model, options_.interactive ? &picker_ : nullptr),
-        runtime_(scheduler_.runtime()) {}
+        runtime_(scheduler_.runtime()),
+        run_index_(run_index) {}
 
   RunResult explore() {
     if (!options_.silent) {
@@ -90,6 +91,13 @@ class Simulation {
     if (!scheduler_.start()) return error();
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
+    if (CompiledSteps* steps = compiled_steps()) {
+      if (std::optional<RunResult> result = run_compiled(*steps)) return *result;
+      // Beyond the compiled path: the run is replayed, its steps so far unobserved again.
+      quiet_until_ = steps_;
+      steps_ = 0;
+      if (!scheduler_.restart(run_index_)) return error();
+    }
     for (;;) {
       const Decision& decision = scheduler_.decide();
       if (decision.kind == Decision::Kind::End) return finish(decision);
@@ -123,7 +131,43 @@ class Simulation {
     }
   }
 
+  /// The model's compiled step path, when it has one and this run can take it: the optimised
+  /// engine in simulated time without a text trace or a prompt.
+  CompiledSteps* compiled_steps() {
+    if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
+        verbose_ || shared_.stochastic || options_.disable_maximal_progress) {
+      return nullptr;
+    }
+    compiled_ = runtime_.code().make_steps(shared_.system, shared_.layout);
+    return compiled_.get();
+  }
+
+  /// The run on the compiled step path; nullopt when it leaves the path (nothing observed of
+  /// the step it could not make).
+  std::optional<RunResult> run_compiled(CompiledSteps& steps) {
+    if (!steps.begin(runtime_.state(), scheduler_.random(), options_.asap,
+                     options_.first_enabled)) {
+      return std::nullopt;
+    }
+    StepInfo info;
+    for (;;) {
+      switch (steps.step(options_.limit && steps_ >= *options_.limit, info)) {
+        case CompiledSteps::Outcome::Fired:
+          info.step = ++steps_;
+          if (!observe(info)) return stopped();
+          continue;
+        case CompiledSteps::Outcome::Deadlock:
+          return end({kRunOk, RunEnd::Deadlock, steps_, {}});
+        case CompiledSteps::Outcome::Limit:
+          return end({kRunOk, RunEnd::Limit, steps_, {}});
+        case CompiledSteps::Outcome::Beyond:
+          return std::nullopt;
+      }
+    }
+  }
+
   bool observe(const StepInfo& info) {
+    if (info.step <= quiet_until_ && info.step != 0) return true;  // replayed
     const StateView view(shared_.system, shared_.layout, runtime_.state(), shared_.strings);
     return observer_.observe(info, view);
   }
@@ -228,6 +272,9 @@ class Simulation {
   PromptPicker picker_;
   detail::Scheduler scheduler_;
   Runtime& runtime_;
+  std::uint64_t run_index_;
+  std::unique_ptr<CompiledSteps> compiled_;
+  std::uint64_t quiet_until_ = 0;  // a replay observes the steps after this one only
   std::chrono::steady_clock::time_point start_;
   RunResult error_result_;
 };

@@ -17,6 +17,7 @@
 
 #include "engines/engines.h"
 #include "engines/semantics/runtime.h"
+#include "engines/semantics/shared_window.h"
 #include "engines/stochastic/date_planner.h"
 
 namespace smcbip::engines {
@@ -164,6 +165,8 @@ class Scheduler {
   bool record_error();
   Runtime& runtime() { return runtime_; }
   const Runtime& runtime() const { return runtime_; }
+  /// The run's random stream (a compiled step path draws from it in the scheduler's stead).
+  RandomStream& random() { return random_; }
 
  private:
   /// An Error end with the runtime's error.
@@ -208,24 +211,17 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::choose(bool& 
   return std::pair{random_choice()};
 }
 
-/// random_choice when every item has the same window (untimed models), in two draws instead
-/// of one per item. The race is then symmetric: its winner is uniform among the n items and
-/// independent of the winning date. On the window [now, +inf) the dates are now + floor(E_i),
-/// the E_i i.i.d. exponential of mean 10 ns, so the earliest is now + floor(min E_i) and
-/// min E_i is exponential of mean 10/n; --first-enabled keeps the winner's own date (mean
-/// 10). On the window {now}, and with --asap, every date is now. Other windows: nullopt.
+/// random_choice when every item has the same window (untimed models): choose_in_shared_window
+/// on the windows [now, +inf) and {now}; nullopt on other windows.
 inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::shared_window_choice() {
   if (!shared_.layout.untimed) return std::nullopt;
   const TimeValue now = runtime_.state().now;
   const Interval& window = runtime_.items_window();
   const bool open_ended = window == Interval::from(now);
   if (!open_ended && !(window == Interval::point(now))) return std::nullopt;
-  const std::size_t n = runtime_.item_count();
-  const auto chosen = static_cast<std::size_t>(random_.below(n));
-  if (options_.asap || !open_ended) return std::pair{chosen, now};
-  const double mean = options_.first_enabled ? 10.0 : 10.0 / static_cast<double>(n);
-  const double delay = std::floor(-mean * std::log(random_.uniform01_open()));
-  return std::pair{chosen, now + static_cast<TimeValue>(delay)};
+  const SharedWindowChoice choice = choose_in_shared_window(
+      runtime_.item_count(), now, open_ended, options_.asap, options_.first_enabled, random_);
+  return std::pair{choice.chosen, choice.date};
 }
 
 /// The reference scheduler: every item draws a date in its window, the earliest wins.

@@ -163,6 +163,8 @@ class Runtime {
   /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
   const ModelError& error() const { return error_; }
+  /// The model's code this runtime runs on (its thread's).
+  ModelCode& code() { return eval_; }
   RunState& state() { return state_; }
   const RunState& state() const { return state_; }
   const Layout& layout() const { return layout_; }

@@ -1,0 +1,148 @@
+#include "engines/semantics/flat_tables.h"
+
+#include <algorithm>
+
+namespace smcbip::engines {
+
+namespace {
+
+using bipc::ir::AtomType;
+using bipc::ir::ConnectorInstance;
+using bipc::ir::PortRef;
+using bipc::ir::System;
+
+/// Whether the compiled step path runs atoms of this type: compiled steps and nothing that
+/// needs the semantics it leaves to the engines (priorities, invariants, resume).
+bool covers_atom_type(const System& system, const ModelCode& code, Index t) {
+  const AtomType& type = system.atom_types[t];
+  if (!code.compiles_atom_type(t) || !type.priorities.empty() || !type.invariants.empty() ||
+      type.initial_resume) {
+    return false;
+  }
+  return std::none_of(type.transitions.begin(), type.transitions.end(),
+                      [](const bipc::ir::Transition& tr) { return tr.resume.has_value(); });
+}
+
+/// Whether connector `k` is a listed rendezvous whose ports each bind one atom port.
+bool covers_connector(const System& system, const Layout& layout, Index k) {
+  const ConnectorInstance& connector = system.connectors[k];
+  const auto& type = system.connector_types[connector.type];
+  const std::size_t n = connector.bound.size();
+  if (n == 0 || n > kPortSetBits || type.resume != bipc::ir::ConnectorType::Resume::None) {
+    return false;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& refs = connector.bound[i];
+    if (refs.size() != 1 || refs.front().kind != PortRef::Kind::Atom ||
+        connector.bound_through_compound[i]) {
+      return false;
+    }
+  }
+  const PortSet all = n == kPortSetBits ? ~PortSet{0} : (PortSet{1} << n) - 1;
+  return layout.enumerated[k] && layout.defined[k].size() == 1 &&
+         layout.defined[k].front().ports == all;
+}
+
+bool covers_system(const System& system, const Layout& layout, const ModelCode& code) {
+  if (!layout.untimed || !system.functions.empty() || !layout.ruled_compounds.empty() ||
+      layout.listed_connectors.size() != system.connectors.size()) {
+    return false;
+  }
+  for (Index t = 0; t < system.atom_types.size(); ++t) {
+    if (!covers_atom_type(system, code, t)) return false;
+  }
+  for (Index k = 0; k < system.connectors.size(); ++k) {
+    if (!covers_connector(system, layout, k)) return false;
+  }
+  return true;
+}
+
+FlatTables::Connector connector_entry(const System& system, const Layout& layout, Index k,
+                                      FlatTables& tables,
+                                      const std::vector<std::uint32_t>& first_offer) {
+  const ConnectorInstance& connector = system.connectors[k];
+  const auto& type = system.connector_types[connector.type];
+  FlatTables::Connector entry;
+  entry.index = k;
+  entry.type = connector.type;
+  entry.first_port = static_cast<std::uint32_t>(tables.ports.size());
+  for (const auto& refs : connector.bound) {
+    const PortRef& ref = refs.front();
+    const bipc::ir::Port& port = system.atom_types[system.atoms[ref.instance].type].ports[ref.port];
+    tables.ports.push_back({ref.instance, ref.port, first_offer[ref.instance] + ref.port,
+                            static_cast<std::uint32_t>(tables.param_slots.size())});
+    for (Index slot : port.data) {
+      tables.param_slots.push_back(
+          static_cast<std::uint32_t>(layout.atom_data[ref.instance] + slot));
+    }
+  }
+  entry.ports_end = static_cast<std::uint32_t>(tables.ports.size());
+  entry.data = static_cast<std::uint32_t>(layout.connector_data[k]);
+  entry.data_size = static_cast<std::uint32_t>(type.data.size());
+  entry.value_data = tables.value_data_size;
+  tables.value_data_size += entry.data_size;
+  entry.code = layout.defined[k].front().code;
+  if (entry.code >= 0) {
+    const auto& interaction = type.interactions[static_cast<std::size_t>(entry.code)];
+    entry.guarded = !interaction.guard.empty() || !interaction.up.empty();
+    entry.has_down = !interaction.down.empty();
+  }
+  return entry;
+}
+
+/// Per atom, the item positions whose items its offers decide, increasing.
+void index_neighbours(FlatTables& tables) {
+  std::vector<std::vector<std::uint32_t>> of_atom(tables.atoms.size());
+  for (std::uint32_t p = 0; p < tables.connectors.size(); ++p) {
+    const FlatTables::Connector& c = tables.connectors[p];
+    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
+      auto& list = of_atom[tables.ports[i].atom];
+      if (list.empty() || list.back() != p) list.push_back(p);
+    }
+  }
+  const auto connectors = static_cast<std::uint32_t>(tables.connectors.size());
+  for (std::uint32_t i = 0; i < tables.internal.size(); ++i) {
+    of_atom[tables.internal[i].atom].push_back(connectors + i);
+  }
+  for (Index a = 0; a < tables.atoms.size(); ++a) {
+    std::vector<std::uint32_t>& list = of_atom[a];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    tables.atoms[a].first_neighbour = static_cast<std::uint32_t>(tables.neighbours.size());
+    tables.neighbours.insert(tables.neighbours.end(), list.begin(), list.end());
+    tables.atoms[a].neighbours_end = static_cast<std::uint32_t>(tables.neighbours.size());
+  }
+}
+
+}  // namespace
+
+std::optional<FlatTables> flat_tables(const System& system, const Layout& layout,
+                                      const ModelCode& code) {
+  if (!covers_system(system, layout, code)) return std::nullopt;
+  FlatTables tables;
+  std::vector<std::uint32_t> first_offer;
+  for (Index a = 0; a < system.atoms.size(); ++a) {
+    const Index t = system.atoms[a].type;
+    FlatTables::Atom atom;
+    atom.type = t;
+    atom.data = static_cast<std::uint32_t>(layout.atom_data[a]);
+    atom.places = static_cast<std::uint32_t>(layout.atom_places[a]);
+    atom.params = static_cast<std::uint32_t>(layout.atom_params[a]);
+    atom.clocks = static_cast<std::uint32_t>(layout.atom_clocks[a]);
+    atom.first_offer = tables.offer_count;
+    atom.has_internal_transitions = !layout.internal_transitions[t].empty();
+    first_offer.push_back(tables.offer_count);
+    tables.offer_count += static_cast<std::uint32_t>(system.atom_types[t].ports.size());
+    tables.atoms.push_back(atom);
+  }
+  for (Index k : layout.listed_connectors) {
+    tables.connectors.push_back(connector_entry(system, layout, k, tables, first_offer));
+  }
+  for (const auto& [atom, port] : layout.internal_ports) {
+    tables.internal.push_back({atom, port, first_offer[atom] + port});
+  }
+  index_neighbours(tables);
+  return tables;
+}
+
+}  // namespace smcbip::engines

@@ -1,0 +1,64 @@
+// The tables of the compiled step path (flat_steps.h): a system whose connectors are rendezvous
+// over atom ports, laid out for a step that touches a few atoms and the connectors next to them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/model.h"
+#include "engines/semantics/layout.h"
+
+namespace smcbip::engines {
+
+struct FlatTables {
+  struct Atom {
+    Index type = 0;
+    std::uint32_t data = 0, places = 0, params = 0, clocks = 0;
+    std::uint32_t first_offer = 0;  // into the offers, one per port of its type
+    std::uint32_t first_neighbour = 0, neighbours_end = 0;  // into `neighbours`
+    bool has_internal_transitions = false;
+  };
+  /// A port parameter of a connector and the atom port it binds.
+  struct Port {
+    Index atom = 0, port = 0;
+    std::uint32_t offer = 0;        // into the offers
+    std::uint32_t first_param = 0;  // into `param_slots`
+  };
+  struct Connector {
+    Index index = 0;  // in System::connectors
+    Index type = 0;
+    std::uint32_t first_port = 0, ports_end = 0;  // into `ports`, in parameter order
+    std::uint32_t data = 0, data_size = 0;        // its slots in the state
+    std::uint32_t value_data = 0;                 // its value's slots in the value data
+    int code = -1;                                // ConnectorType::interactions, or -1
+    bool guarded = false;                         // a guard or an `up` to run
+    bool has_down = false;
+  };
+  /// An internal port item: its atom and port, and its offer.
+  struct Internal {
+    Index atom = 0, port = 0;
+    std::uint32_t offer = 0;
+  };
+  std::vector<Atom> atoms;
+  /// Item positions: the listed connectors in listing order, then the internal ports.
+  std::vector<Connector> connectors;
+  std::vector<Internal> internal;
+  std::vector<Port> ports;
+  std::vector<std::uint32_t> param_slots;  // state data slots of the ports' parameters
+  std::vector<std::uint32_t> neighbours;   // per atom: the item positions its offers decide
+  std::uint32_t offer_count = 0, value_data_size = 0;
+
+  std::size_t positions() const { return connectors.size() + internal.size(); }
+};
+
+/// The tables of `system` when the compiled step path covers it, nullopt otherwise. It covers
+/// untimed systems (Layout::untimed) without extern functions, priorities, invariants or resume,
+/// whose atom types `code` compiles and whose connectors are listed rendezvous: one defined
+/// interaction of all their ports, each binding one atom port.
+std::optional<FlatTables> flat_tables(const bipc::ir::System& system, const Layout& layout,
+                                      const ModelCode& code);
+
+}  // namespace smcbip::engines
