@@ -93,10 +93,7 @@ class Simulation {
     if (!observe(StepInfo{})) return stopped();
     if (CompiledSteps* steps = compiled_steps()) {
       if (std::optional<RunResult> result = run_compiled(*steps)) return *result;
-      // Beyond the compiled path: the run is replayed, its steps so far unobserved again.
-      quiet_until_ = steps_;
-      steps_ = 0;
-      if (!scheduler_.restart(run_index_)) return error();
+      if (std::optional<RunResult> result = replay_quietly(steps_)) return *result;
     }
     for (;;) {
       const Decision& decision = scheduler_.decide();
@@ -166,8 +163,20 @@ class Simulation {
     }
   }
 
+  /// Beyond the compiled path: the run starts again on the scheduler, whose first `observed`
+  /// steps (those the compiled path made and observed) are not observed again; nullopt when it
+  /// has made them and goes on.
+  std::optional<RunResult> replay_quietly(std::uint64_t observed) {
+    if (!scheduler_.restart(run_index_)) return error();
+    while (scheduler_.steps() < observed) {
+      const Decision& decision = scheduler_.decide();
+      if (decision.kind == Decision::Kind::End) return finish(decision);
+      if (!scheduler_.perform(decision)) return error();
+    }
+    return std::nullopt;
+  }
+
   bool observe(const StepInfo& info) {
-    if (info.step <= quiet_until_ && info.step != 0) return true;  // replayed
     const StateView view(shared_.system, shared_.layout, runtime_.state(), shared_.strings);
     return observer_.observe(info, view);
   }
@@ -274,7 +283,6 @@ class Simulation {
   Runtime& runtime_;
   std::uint64_t run_index_;
   std::unique_ptr<CompiledSteps> compiled_;
-  std::uint64_t quiet_until_ = 0;  // a replay observes the steps after this one only
   std::chrono::steady_clock::time_point start_;
   RunResult error_result_;
 };

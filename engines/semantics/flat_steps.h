@@ -39,7 +39,6 @@ class FlatSteps final : public CompiledSteps {
       : code_(code), system_(system), layout_(layout), t_(std::move(tables)) {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
-    eager_.assign(t_.positions(), 0);
     touched_.assign(t_.atoms.size(), 0);
     recomputed_.assign(t_.positions(), 0);
   }
