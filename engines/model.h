@@ -22,6 +22,8 @@ struct Layout;
 struct RunState;
 struct StepInfo;
 class RandomStream;
+class Runtime;
+class DatePlanner;
 
 /// A step path compiled together with a model's code (engines/semantics/flat_steps.h): it takes
 /// over a run the engines started and makes the steps the optimised engine would make, with the
@@ -30,13 +32,19 @@ class RandomStream;
 /// engines replay the run from its start to find out what happens there.
 class CompiledSteps {
  public:
-  enum class Outcome : std::uint8_t { Fired, Deadlock, Limit, Beyond };
+  enum class Outcome : std::uint8_t { Fired, Deadlock, Timelock, Limit, Beyond };
+  /// What a run on the compiled path draws from and how it chooses.
+  struct Run {
+    Runtime& runtime;      // its state: initialised, nothing fired yet
+    RandomStream& random;  // the run's stream
+    DatePlanner* planner;  // stochastic mode: draws the dates of the race; else nullptr
+    bool asap = false, first_enabled = false;
+  };
   virtual ~CompiledSteps() = default;
-  /// Takes over the run in `state` (initialised, nothing fired) drawing from `random`; `asap`
-  /// and `first_enabled` are the scheduling options. False when this state is not covered.
-  virtual bool begin(RunState& state, RandomStream& random, bool asap, bool first_enabled) = 0;
-  /// Decides and fires the next step (`info` tells which); Deadlock when nothing is enabled,
-  /// else Limit when `at_limit`.
+  /// Takes over the run. False when its state is not covered.
+  virtual bool begin(const Run& run) = 0;
+  /// Decides and fires the next step (`info` tells which); Deadlock or Timelock when nothing
+  /// is enabled (as the engines tell them apart), else Limit when `at_limit`.
   virtual Outcome step(bool at_limit, StepInfo& info) = 0;
 };
 

@@ -13,7 +13,7 @@
 namespace smcbip::engines {
 
 /// Bumped whenever PluginEntry or the types it hands over change incompatibly.
-inline constexpr std::uint32_t kPluginAbi = 3;  // 3: ModelCode::make_steps
+inline constexpr std::uint32_t kPluginAbi = 4;  // 4: CompiledSteps::Run
 
 /// A fingerprint of the layouts a plugin and its host must share (both compute it from the
 /// headers they were built with), to refuse a plugin built against other headers.

@@ -132,7 +132,7 @@ class Simulation {
   /// engine in simulated time without a text trace or a prompt.
   CompiledSteps* compiled_steps() {
     if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
-        verbose_ || shared_.stochastic || options_.disable_maximal_progress) {
+        verbose_ || options_.disable_maximal_progress) {
       return nullptr;
     }
     compiled_ = runtime_.code().make_steps(shared_.system, shared_.layout);
@@ -142,8 +142,9 @@ class Simulation {
   /// The run on the compiled step path; nullopt when it leaves the path (nothing observed of
   /// the step it could not make).
   std::optional<RunResult> run_compiled(CompiledSteps& steps) {
-    if (!steps.begin(runtime_.state(), scheduler_.random(), options_.asap,
-                     options_.first_enabled)) {
+    DatePlanner* planner = shared_.stochastic ? &scheduler_.planner() : nullptr;
+    if (!steps.begin(
+            {runtime_, scheduler_.random(), planner, options_.asap, options_.first_enabled})) {
       return std::nullopt;
     }
     StepInfo info;
@@ -155,6 +156,8 @@ class Simulation {
           continue;
         case CompiledSteps::Outcome::Deadlock:
           return end({kRunOk, RunEnd::Deadlock, steps_, {}});
+        case CompiledSteps::Outcome::Timelock:
+          return end({kRunOk, RunEnd::Timelock, steps_, {}});
         case CompiledSteps::Outcome::Limit:
           return end({kRunOk, RunEnd::Limit, steps_, {}});
         case CompiledSteps::Outcome::Beyond:

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engines/engines.h"
+#include "engines/semantics/item_race.h"
 #include "engines/semantics/runtime.h"
 #include "engines/semantics/shared_window.h"
 #include "engines/stochastic/date_planner.h"
@@ -58,49 +59,6 @@ struct Decision {
   Item item;
   RunEnd end = RunEnd::Deadlock;
   int code = kRunOk;
-};
-
-/// The first date of `interval` from `now` on.
-inline TimeValue earliest(const Interval& interval, TimeValue now) {
-  return std::max(interval.first(), now);
-}
-
-/// The date an item is planned at by the reference scheduler: uniform over the (integer
-/// nanosecond) points of a bounded window; on an unbounded one the left end plus an
-/// exponential delay of mean 10 ns, as the reference engine's Interval::random does.
-inline TimeValue random_date(const Interval& interval, RandomStream& random) {
-  if (interval.bounded()) return uniform_date(interval, random);
-  return interval.first() +
-         static_cast<TimeValue>(std::floor(-10.0 * std::log(random.uniform01_open())));
-}
-
-/// The delay floor(-10 ln u) of random_date's unbounded case, computed only when needed: the
-/// scheduler mostly has to know whether it is below, at or above a given whole number of
-/// nanoseconds, which comparing u with exp(-d / 10) answers without a logarithm. Near those
-/// bounds (within a relative 1e-9, far above the rounding errors of exp and log) the delay is
-/// computed exactly as random_date does, so the choices are the same.
-class ExponentialDelay {
- public:
-  static TimeValue of(double u) { return static_cast<TimeValue>(std::floor(-10.0 * std::log(u))); }
-  /// The sign of of(u) - d; the bounds of the last d are kept (items mostly share it).
-  int compare(double u, TimeValue d) {
-    if (d < 0) return 1;  // u < 1, so the delay is never negative
-    if (d != d_) {
-      d_ = d;
-      below_d_ = std::exp(-static_cast<double>(d) / 10.0);  // u above it: delay < d
-      below_next_ = std::exp(-static_cast<double>(d + 1) / 10.0);
-    }
-    constexpr double kMargin = 1e-9;
-    if (u > below_d_ * (1 + kMargin)) return -1;
-    if (u < below_next_ * (1 - kMargin)) return 1;
-    if (u < below_d_ * (1 - kMargin) && u > below_next_ * (1 + kMargin)) return 0;
-    const TimeValue exact = of(u);
-    return exact < d ? -1 : exact > d ? 1 : 0;
-  }
-
- private:
-  TimeValue d_ = -1;
-  double below_d_ = 0, below_next_ = 0;
 };
 
 /// What observers are told of the step that fires `item` at `at`, the `step`-th.
@@ -167,6 +125,9 @@ class Scheduler {
   const Runtime& runtime() const { return runtime_; }
   /// The run's random stream (a compiled step path draws from it in the scheduler's stead).
   RandomStream& random() { return random_; }
+  /// The stochastic race's date planner (a compiled step path draws with it, keeping its own
+  /// plans).
+  DatePlanner& planner() { return planner_; }
 
  private:
   /// An Error end with the runtime's error.
@@ -227,41 +188,9 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::shared_window
 /// The reference scheduler: every item draws a date in its window, the earliest wins.
 inline std::pair<std::size_t, TimeValue> Scheduler::random_choice() {
   const auto& items = runtime_.items();
-  const TimeValue now = runtime_.state().now;
-  std::size_t best = 0, ties = 0;
-  TimeValue best_criterion = kPlusInfinity, best_date = now;
-  ExponentialDelay delay;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const Interval& interval = items[i].constraint.interval;
-    if (!options_.asap && !options_.first_enabled && !interval.bounded()) {
-      // The planned date is the criterion: often decided without its logarithm.
-      const TimeValue first = interval.first();
-      const double u = random_.uniform01_open();
-      const int order = i == 0 ? -1 : delay.compare(u, best_criterion - first);
-      if (order < 0) {
-        best = i;
-        ties = 1;
-        best_criterion = best_date = first + ExponentialDelay::of(u);
-      } else if (order == 0 && random_.below(++ties) == 0) {
-        best = i;
-        best_date = best_criterion;
-      }
-      continue;
-    }
-    const TimeValue planned =
-        options_.asap ? earliest(interval, now) : random_date(interval, random_);
-    const TimeValue criterion = options_.first_enabled ? earliest(interval, now) : planned;
-    if (i == 0 || criterion < best_criterion) {
-      best = i;
-      ties = 1;
-      best_criterion = criterion;
-      best_date = planned;
-    } else if (criterion == best_criterion && random_.below(++ties) == 0) {
-      best = i;
-      best_date = planned;
-    }
-  }
-  return {best, std::max(best_date, now)};
+  return random_race(
+      items.size(), [&](std::size_t i) -> const Interval& { return items[i].constraint.interval; },
+      runtime_.state().now, options_.asap, options_.first_enabled, random_);
 }
 
 /// Stochastic mode: the earliest planned date that lies in its item's window wins.
@@ -281,18 +210,9 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::race(bool& fa
 
 inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::earliest_in_window() {
   const auto& items = runtime_.items();
-  std::optional<std::pair<std::size_t, TimeValue>> best;
-  std::uint64_t ties = 0;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (!items[i].constraint.interval.contains(dates_[i])) continue;
-    if (!best || dates_[i] < best->second) {
-      best = std::pair{i, dates_[i]};
-      ties = 1;
-    } else if (dates_[i] == best->second && random_.below(++ties) == 0) {
-      best->first = i;
-    }
-  }
-  return best;
+  return engines::earliest_in_window(
+      items.size(), [&](std::size_t i) -> const Interval& { return items[i].constraint.interval; },
+      [&](std::size_t i) { return dates_[i]; }, random_);
 }
 
 inline const Decision& Scheduler::decide() {

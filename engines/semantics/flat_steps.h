@@ -4,9 +4,13 @@
 // inlined, and the step keeps to compact tables: what a step costs is the atoms it fires and
 // the connectors next to them.
 //
-// It makes the Runtime's and Scheduler's choices with the same draws: items at positions (the
-// listed connectors in listing order, then the internal ports) counted in an ItemIndex, the
-// choice of choose_in_shared_window, then the firing of Runtime::execute_value and fire_port.
+// It makes the Runtime's and Scheduler's choices with the same draws. Items sit at positions
+// (the listed connectors in listing order, then the internal ports). On an untimed layout they
+// are counted in an ItemIndex and chosen by choose_in_shared_window; on a timed one (or in
+// stochastic mode) each has its constraint, the waiting window cuts them as
+// Runtime::wait_interval does, and the reference race (random_race) or the stochastic race of
+// planned dates (earliest_in_window, dates kept per position as DatePlanner keeps them per
+// item) chooses. The firing is that of Runtime::execute_value and fire_port.
 // Whatever the Runtime would report as an error (1-safety, non-determinism, code faults) ends
 // the path as Beyond: the engines then replay the run, which tells the error as they do.
 #pragma once
@@ -22,11 +26,14 @@
 #include "engines/interpreter/code_eval.h"
 #include "engines/model.h"
 #include "engines/run_observer.h"
+#include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/flat_tables.h"
 #include "engines/semantics/item_index.h"
+#include "engines/semantics/item_race.h"
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime.h"
 #include "engines/semantics/shared_window.h"
+#include "engines/stochastic/date_planner.h"
 #include "engines/stochastic/random_stream.h"
 
 namespace smcbip::engines {
@@ -43,14 +50,21 @@ class FlatSteps final : public CompiledSteps {
     recomputed_.assign(t_.positions(), 0);
   }
 
-  bool begin(RunState& state, RandomStream& random, bool asap, bool first_enabled) override {
-    state_ = &state;
-    random_ = &random;
-    asap_ = asap;
-    first_enabled_ = first_enabled;
+  bool begin(const Run& run) override {
+    runtime_ = &run.runtime;
+    state_ = &run.runtime.state();
+    random_ = &run.random;
+    planner_ = run.planner;
+    asap_ = run.asap;
+    first_enabled_ = run.first_enabled;
+    timed_ = planner_ != nullptr || !layout_.untimed;
     index_.reset(t_.positions());
     eager_.assign(t_.positions(), 0);
     eager_count_ = 0;
+    enabled_.assign(t_.positions(), 0);
+    raw_.assign(t_.positions(), Constraint{});
+    plans_.assign(t_.positions(), Planned{});
+    generation_ = 1;
     try {
       for (Index a = 0; a < t_.atoms.size(); ++a) {
         if (!update_atom(a, atom_frame(a))) return false;
@@ -63,15 +77,109 @@ class FlatSteps final : public CompiledSteps {
   }
 
   Outcome step(bool at_limit, StepInfo& info) override {
+    if (timed_) return timed_step(at_limit, info);
     const std::size_t n = index_.total();
     if (n == 0) return Outcome::Deadlock;
     if (at_limit) return Outcome::Limit;
     const SharedWindowChoice choice =
         choose_in_shared_window(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    const std::size_t p = index_.find(choice.chosen).first;
-    state_->now = choice.date;
+    return fire(static_cast<std::uint32_t>(index_.find(choice.chosen).first), choice.date, info);
+  }
+
+ private:
+  /// An item of a timed step: its position and its window cut to the waiting window.
+  struct Listed {
+    std::uint32_t position = 0;
+    Interval window;
+    TimeValue date = 0;  // stochastic mode: its planned date
+  };
+  /// DatePlanner's plan of an item, per position.
+  struct Planned {
+    Constraint offered;
+    TimeValue date = 0;
+    std::uint64_t seen = 0;  // the last race that found the item enabled
+  };
+
+  /// A step on a timed layout or in stochastic mode: the items cut to the waiting window (as
+  /// Runtime::compute_items lists them), then the Scheduler's choice among them.
+  Outcome timed_step(bool at_limit, StepInfo& info) {
+    const TimeValue now = state_->now;
+    Interval waiting = Interval::from(now);
+    for (std::uint32_t p = 0; p < t_.positions(); ++p) {
+      if (enabled_[p] && raw_[p].urgency != bipc::Urgency::Lazy) {
+        narrow(waiting, detail::wait(raw_[p], now));
+      }
+    }
+    items_.clear();
+    for (std::uint32_t p = 0; p < t_.positions(); ++p) {
+      if (!enabled_[p]) continue;
+      Listed& item = items_.emplace_back();
+      item.position = p;
+      item.window.left = raw_[p].interval.left;
+      item.window.right = raw_[p].interval.right;
+      item.window.left_open = raw_[p].interval.left_open;
+      item.window.right_open = raw_[p].interval.right_open;
+      narrow(item.window, waiting);
+      if (item.window.empty()) items_.pop_back();
+    }
+    if (items_.empty()) {
+      return waiting.right == kPlusInfinity ? Outcome::Deadlock : Outcome::Timelock;
+    }
+    if (at_limit) return Outcome::Limit;
+    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
+    std::optional<std::pair<std::size_t, TimeValue>> choice;
+    if (planner_ == nullptr) {
+      choice = random_race(items_.size(), window, now, asap_, first_enabled_, *random_);
+    } else {
+      try {
+        if (!race(choice)) return Outcome::Beyond;
+      } catch (const CodeFault&) {
+        return Outcome::Beyond;
+      }
+      if (!choice) return Outcome::Timelock;
+    }
+    return fire(items_[choice->first].position, choice->second, info);
+  }
+
+  /// Scheduler::race over items_: DatePlanner::plan's kept or new dates, then the earliest in
+  /// its window, or after replan_within_windows; false when a date cannot be drawn.
+  bool race(std::optional<std::pair<std::size_t, TimeValue>>& choice) {
+    ++generation_;
+    for (Listed& item : items_) {
+      Planned& planned = plans_[item.position];
+      const Constraint& offered = raw_[item.position];
+      const bool kept = planned.seen + 1 == generation_ &&
+                        planned.offered.urgency == offered.urgency &&
+                        planned.offered.interval == offered.interval;
+      if (!kept) {
+        if (!planner_->draw_date(*runtime_, t_.stochastic[item.position], offered, planned.date,
+                                 problem_)) {
+          return false;
+        }
+        planned.offered = offered;
+      }
+      planned.seen = generation_;
+      item.date = planned.date;
+    }
+    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
+    const auto date = [&](std::size_t i) { return items_[i].date; };
+    choice = earliest_in_window(items_.size(), window, date, *random_);
+    if (choice) return true;
+    for (Listed& item : items_) {
+      if (t_.stochastic[item.position]) continue;
+      item.date = planner_->draw_timed(raw_[item.position].urgency, item.window);
+      plans_[item.position].date = item.date;
+    }
+    choice = earliest_in_window(items_.size(), window, date, *random_);
+    return true;
+  }
+
+  /// Fires the item at position `p` at `date`, then recomputes the items of the atoms it
+  /// touched.
+  Outcome fire(std::uint32_t p, TimeValue date, StepInfo& info) {
+    state_->now = date;
     info = StepInfo{};
-    info.time = choice.date;
+    info.time = date;
     ++stamp_;
     touched_list_.clear();
     try {
@@ -101,7 +209,6 @@ class FlatSteps final : public CompiledSteps {
     return Outcome::Fired;
   }
 
- private:
   /// What connector code finds its port parameters through (Frame::port_slot).
   struct PortContext {
     FlatSteps* steps;
@@ -119,6 +226,7 @@ class FlatSteps final : public CompiledSteps {
     Frame f;
     f.atom_data = state_->data.data() + atom.data;
     f.atom_params = layout_.params.data() + atom.params;
+    f.clocks = atom.has_clocks ? state_->clocks.data() + atom.clocks : nullptr;
     f.clock_units = layout_.clock_units.data() + atom.clocks;
     f.now = state_->now;
     return f;
@@ -190,6 +298,10 @@ class FlatSteps final : public CompiledSteps {
   /// The item at position `p` as the Runtime computes it: a connector's value when all its ports
   /// offer and its guard holds (then its `up` runs), an internal port's offer.
   void recompute(std::uint32_t p) {
+    if (timed_) {
+      recompute_timed(p);
+      return;
+    }
     bool enabled = true;
     bool eager = false;
     if (p < t_.connectors.size()) {
@@ -214,6 +326,35 @@ class FlatSteps final : public CompiledSteps {
     }
   }
 
+  /// recompute on a timed layout: the item's constraint too, the intersection of its ports'
+  /// (Runtime::add_choice); a connector whose ports' windows do not meet is not enabled, and
+  /// its guard not run (Runtime::keep_value_if_allowed).
+  void recompute_timed(std::uint32_t p) {
+    // Narrowed in place, field by field: a Constraint built on the stack and copied whole
+    // stalled on store forwarding.
+    Constraint& raw = raw_[p];
+    raw.interval.left = kMinusInfinity;
+    raw.interval.right = kPlusInfinity;
+    raw.interval.left_open = raw.interval.right_open = false;
+    raw.urgency = bipc::Urgency::Lazy;
+    bool enabled = true;
+    if (p < t_.connectors.size()) {
+      const FlatTables::Connector& c = t_.connectors[p];
+      for (std::uint32_t i = c.first_port; i < c.ports_end && enabled; ++i) {
+        const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
+        enabled = offer.has_value();
+        if (enabled) detail::add_offer_constraint(raw, offer->constraint);
+      }
+      enabled = enabled && !raw.interval.empty() && value_allowed(c);
+    } else {
+      const std::optional<AtomPortValue>& offer =
+          offers_[t_.internal[p - t_.connectors.size()].offer];
+      enabled = offer.has_value();
+      if (enabled) detail::add_offer_constraint(raw, offer->constraint);
+    }
+    enabled_[p] = enabled ? 1 : 0;
+  }
+
   /// Runtime::connector_code_allows: the connector's data copied into its value, the guard, then
   /// `up` when it holds.
   bool value_allowed(const FlatTables::Connector& c) {
@@ -231,9 +372,12 @@ class FlatSteps final : public CompiledSteps {
   const bipc::ir::System& system_;
   const Layout& layout_;
   const FlatTables t_;
+  Runtime* runtime_ = nullptr;
   RunState* state_ = nullptr;
   RandomStream* random_ = nullptr;
+  DatePlanner* planner_ = nullptr;
   bool asap_ = false, first_enabled_ = false;
+  bool timed_ = false;  // the items have windows of their own (timed_step)
   std::vector<std::optional<AtomPortValue>> offers_;
   std::vector<Val> value_data_;
   ItemIndex index_;
@@ -243,6 +387,14 @@ class FlatSteps final : public CompiledSteps {
   std::uint64_t stamp_ = 0;
   std::vector<std::uint64_t> touched_, recomputed_;
   std::vector<Index> touched_list_;
+  // Timed steps: per position whether its item is enabled and its constraint; the items of
+  // the step; stochastic mode: the plans per position, the race count, a draw's error.
+  std::vector<std::uint8_t> enabled_;
+  std::vector<Constraint> raw_;
+  std::vector<Listed> items_;
+  std::vector<Planned> plans_;
+  std::uint64_t generation_ = 1;
+  std::string problem_;
 };
 
 /// The compiled step path over `code` for `system`, or nullptr when flat_tables does not cover

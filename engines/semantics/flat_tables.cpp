@@ -44,7 +44,8 @@ bool covers_connector(const System& system, const Layout& layout, Index k) {
 }
 
 bool covers_system(const System& system, const Layout& layout, const ModelCode& code) {
-  if (!layout.untimed || !system.functions.empty() || !layout.ruled_compounds.empty() ||
+  if (!layout.extern_ports.empty() || !system.functions.empty() ||
+      !layout.ruled_compounds.empty() ||
       layout.listed_connectors.size() != system.connectors.size()) {
     return false;
   }
@@ -114,6 +115,27 @@ void index_neighbours(FlatTables& tables) {
   }
 }
 
+bool is_stochastic(const System& system, Index atom, Index port) {
+  return system.atom_types[system.atoms[atom].type].ports[port].stochastic.has_value();
+}
+
+/// Per position, the first @stochastic atom port its item fires (in parameter order).
+void index_stochastic_ports(const System& system, FlatTables& tables) {
+  for (const FlatTables::Connector& c : tables.connectors) {
+    std::optional<std::pair<Index, Index>>& found = tables.stochastic.emplace_back();
+    for (std::uint32_t i = c.first_port; i < c.ports_end && !found; ++i) {
+      const FlatTables::Port& port = tables.ports[i];
+      if (is_stochastic(system, port.atom, port.port)) found = std::pair{port.atom, port.port};
+    }
+  }
+  for (const FlatTables::Internal& internal : tables.internal) {
+    std::optional<std::pair<Index, Index>>& found = tables.stochastic.emplace_back();
+    if (is_stochastic(system, internal.atom, internal.port)) {
+      found = std::pair{internal.atom, internal.port};
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<FlatTables> flat_tables(const System& system, const Layout& layout,
@@ -131,6 +153,7 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     atom.clocks = static_cast<std::uint32_t>(layout.atom_clocks[a]);
     atom.first_offer = tables.offer_count;
     atom.has_internal_transitions = !layout.internal_transitions[t].empty();
+    atom.has_clocks = !system.atom_types[t].clocks.empty();
     first_offer.push_back(tables.offer_count);
     tables.offer_count += static_cast<std::uint32_t>(system.atom_types[t].ports.size());
     tables.atoms.push_back(atom);
@@ -142,6 +165,7 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     tables.internal.push_back({atom, port, first_offer[atom] + port});
   }
   index_neighbours(tables);
+  index_stochastic_ports(system, tables);
   return tables;
 }
 

@@ -20,6 +20,7 @@ struct FlatTables {
     std::uint32_t first_offer = 0;  // into the offers, one per port of its type
     std::uint32_t first_neighbour = 0, neighbours_end = 0;  // into `neighbours`
     bool has_internal_transitions = false;
+    bool has_clocks = false;
   };
   /// A port parameter of a connector and the atom port it binds.
   struct Port {
@@ -49,15 +50,17 @@ struct FlatTables {
   std::vector<Port> ports;
   std::vector<std::uint32_t> param_slots;  // state data slots of the ports' parameters
   std::vector<std::uint32_t> neighbours;   // per atom: the item positions its offers decide
+  /// Per position: the @stochastic atom port its item fires, if any (DatePlanner's choice).
+  std::vector<std::optional<std::pair<Index, Index>>> stochastic;
   std::uint32_t offer_count = 0, value_data_size = 0;
 
   std::size_t positions() const { return connectors.size() + internal.size(); }
 };
 
 /// The tables of `system` when the compiled step path covers it, nullopt otherwise. It covers
-/// untimed systems (Layout::untimed) without extern functions, priorities, invariants or resume,
-/// whose atom types `code` compiles and whose connectors are listed rendezvous: one defined
-/// interaction of all their ports, each binding one atom port.
+/// systems without extern ports or functions, priorities, invariants or resume, whose atom
+/// types `code` compiles and whose connectors are listed rendezvous: one defined interaction
+/// of all their ports, each binding one atom port.
 std::optional<FlatTables> flat_tables(const bipc::ir::System& system, const Layout& layout,
                                       const ModelCode& code);
 

@@ -132,7 +132,9 @@ bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::str
     Planned& planned = plan_of(runtime, item);
     const bool kept = planned.seen + 1 == generation_ && same(planned.offered, item.offered);
     if (!kept) {
-      if (!draw(runtime, item, planned.date, error)) return false;
+      if (!draw_date(runtime, stochastic_port(runtime, item), item.offered, planned.date, error)) {
+        return false;
+      }
       planned.offered = item.offered;
     }
     planned.seen = generation_;
@@ -145,14 +147,16 @@ bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::str
   return true;
 }
 
-bool DatePlanner::draw(Runtime& runtime, const Item& item, TimeValue& date, std::string& error) {
+bool DatePlanner::draw_date(Runtime& runtime,
+                            const std::optional<std::pair<Index, Index>>& stochastic,
+                            const Constraint& offered, TimeValue& date, std::string& error) {
   // The item's own window from now: the dates other items' deadlines cut off stay possible, as
   // the race decides whether the item gets there.
-  const Interval window = item.offered.interval.intersect(Interval::from(runtime.state().now));
-  if (const auto stochastic = stochastic_port(runtime, item)) {
+  const Interval window = offered.interval.intersect(Interval::from(runtime.state().now));
+  if (stochastic) {
     return draw_stochastic(runtime, stochastic->first, stochastic->second, window, date, error);
   }
-  date = draw_timed(item.offered.urgency, window);
+  date = draw_timed(offered.urgency, window);
   return true;
 }
 

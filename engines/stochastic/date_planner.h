@@ -53,6 +53,16 @@ class DatePlanner {
   /// Forgets every planned date: the next plan() draws them all (a new run).
   void forget() { ++generation_; }
 
+  /// A new date for an item offered `offered`, as plan() draws one: from the @stochastic
+  /// annotation of the atom port `stochastic` when the item fires one, from its urgency and
+  /// window otherwise. For a caller that keeps its own plans (the compiled step path). False
+  /// with `error` set as plan().
+  bool draw_date(Runtime& runtime, const std::optional<std::pair<Index, Index>>& stochastic,
+                 const Constraint& offered, TimeValue& date, std::string& error);
+  /// A date for an item without a @stochastic port: its window's first date when eager, else
+  /// uniform in a bounded window, exponential after an unbounded one's first date.
+  TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
+
  private:
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.
@@ -83,10 +93,8 @@ class DatePlanner {
   void index_connectors(const Runtime& runtime);
   /// The plan of the item (created empty when new).
   Planned& plan_of(const Runtime& runtime, const Item& item);
-  bool draw(Runtime& runtime, const Item& item, TimeValue& date, std::string& error);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
-  TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
   /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
   /// bind one atom port), if any.
   std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;

@@ -104,31 +104,17 @@ TEST_P(GeneratedCode, ItsOwnCodeRuns) {
   EXPECT_EQ(calls, 2);
 }
 
-/// Whether the generated code of the model has a compiled step path that covers it.
-bool has_compiled_steps(const GeneratedModel& generated) {
-  const bipc::ir::System& system = generated.system();
-  engines::Layout layout;
-  EXPECT_EQ(engines::build_layout(system, layout), "");
-  engines::StringPool strings;
-  std::ostringstream out;
-  engines::CallContext call{out, strings};
-  engines::BoundFunctions functions;
-  EXPECT_EQ(engines::bind_functions(system, engines::Externs::with_builtins(), strings, functions),
-            "");
-  const std::unique_ptr<engines::ModelCode> code =
-      generated.make_code(system, functions, call, nullptr);
-  return code->make_steps(system, layout) != nullptr;
-}
-
 // The runs above compare the compiled step path with the interpreter only where it is taken:
-// these are the models it covers (untimed rendezvous), the others it must leave alone.
-TEST(CompiledSteps, CoverTheUntimedRendezvousModels) {
+// these are the models it covers (rendezvous, untimed, timed or stochastic), the others it must
+// leave alone.
+TEST(CompiledSteps, CoverTheRendezvousModels) {
   std::set<std::string> covered;
   for (const GeneratedModel& generated : generated_models()) {
-    if (has_compiled_steps(generated)) covered.insert(generated.name);
+    if (has_compiled_steps(generated.system(), generated.make_code)) covered.insert(generated.name);
   }
-  const std::set<std::string> expected = {"chain_10",    "late_division", "late_nondeterminism",
-                                          "late_unsafe", "rendezvous_10", "work_10"};
+  const std::set<std::string> expected = {
+      "chain_10",    "channel",       "late_division", "late_nondeterminism",
+      "late_unsafe", "rendezvous_10", "work_10"};
   EXPECT_EQ(covered, expected);
 }
 

@@ -3,10 +3,12 @@
 // guards, clocks and urgencies, priorities, hierarchy) beyond the hand-written ones.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "engines/engines.h"
+#include "engines/stochastic/date_planner.h"
 #include "random_models.h"
 #include "run_trace.h"
 #include "tests/engines/temp_model.h"
@@ -39,17 +41,43 @@ TEST_P(GeneratedRandomCode, RunsLikeTheInterpretedModel) {
   }
 }
 
-// The comparison shows little on models that deadlock at once: most must run to the limit.
+// The comparison shows little on models that deadlock at once: most must run to the limit (a
+// third of the rendezvous ones, where a deadlock or time-lock comes sooner).
 TEST(GeneratedRandomModels, MostRunToTheLimit) {
-  std::size_t lively = 0;
+  std::size_t lively = 0, rendezvous_lively = 0, models = 0, rendezvous = 0;
   for (const GeneratedRandomModel& generated : generated_random_models()) {
     const std::optional<bipc::ir::System> system = load_model(generated.file, "Root()");
     ASSERT_TRUE(system) << generated.file;
     const std::string trace =
         trace_of(engines::InterpretedModel(*system), EngineKind::Optimised, 1);
-    if (trace.find("reached limit") != std::string::npos) ++lively;
+    const bool limit = trace.find("reached limit") != std::string::npos;
+    if (std::string(generated.options).find("--rendezvous") != std::string::npos) {
+      ++rendezvous;
+      rendezvous_lively += limit ? 1 : 0;
+    } else {
+      ++models;
+      lively += limit ? 1 : 0;
+    }
   }
-  EXPECT_GE(3 * lively, 2 * generated_random_models().size());
+  EXPECT_GE(3 * lively, 2 * models);
+  EXPECT_GE(3 * rendezvous_lively, rendezvous);
+}
+
+// The timed rendezvous models (stochastic ones among them) are the compiled step path's: their
+// runs on the optimised engine compare it with the interpreter.
+TEST(GeneratedRandomModels, TheCompiledStepPathCoversTheRendezvousOnes) {
+  std::size_t rendezvous = 0, stochastic = 0;
+  for (const GeneratedRandomModel& generated : generated_random_models()) {
+    const std::string options = generated.options;
+    if (options.find("--rendezvous") == std::string::npos) continue;
+    const std::optional<bipc::ir::System> system = load_model(generated.file, "Root()");
+    ASSERT_TRUE(system) << generated.file;
+    EXPECT_TRUE(has_compiled_steps(*system, generated.make_code)) << "seed " << generated.seed;
+    ++rendezvous;
+    if (engines::has_stochastic_ports(*system)) ++stochastic;
+  }
+  EXPECT_GE(rendezvous, 10u);
+  EXPECT_GE(stochastic, 4u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, GeneratedRandomCode, ::testing::ValuesIn(generated_random_models()),

@@ -2,10 +2,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <sstream>
 #include <string>
 
 #include "engines/engines.h"
+#include "engines/interpreter/code_eval.h"
+#include "engines/semantics/layout.h"
 
 namespace smcbip::tests {
 
@@ -31,6 +34,24 @@ inline std::string run_trace(const engines::Model& model, engines::EngineKind en
         << "\n";
   }
   return out.str();
+}
+
+/// Whether the code `make_code` generated for `system` has a compiled step path that covers it
+/// (the optimised engine's runs above then take it).
+inline bool has_compiled_steps(const bipc::ir::System& system,
+                               const engines::CompiledModel::CodeFactory& make_code) {
+  engines::Layout layout;
+  if (!engines::build_layout(system, layout).empty()) return false;
+  engines::StringPool strings;
+  std::ostringstream out;
+  engines::CallContext call{out, strings};
+  engines::BoundFunctions functions;
+  if (!engines::bind_functions(system, engines::Externs::with_builtins(), strings, functions)
+           .empty()) {
+    return false;
+  }
+  const std::unique_ptr<engines::ModelCode> code = make_code(system, functions, call, nullptr);
+  return code->make_steps(system, layout) != nullptr;
 }
 
 }  // namespace smcbip::tests

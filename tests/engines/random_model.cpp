@@ -56,7 +56,8 @@ SubType Generator::make_sub_type(int index) {
     if (offer.used || !(offer.must_bind || chance(75))) continue;
     const std::string as = "x" + std::to_string(exported++);
     scope.body << "    export port " << offer.ref << " as " << as << "\n";
-    sub.exports.push_back(Offer{as, offer.type, offer.components, offer.must_bind, false});
+    sub.exports.push_back(
+        Offer{as, offer.type, offer.components, offer.must_bind, false, offer.stochastic});
   }
   for (std::size_t i = 0; i < scope.guard_ints.size(); ++i) {
     if (i > 0 && chance(50)) continue;
@@ -85,7 +86,8 @@ void Generator::make_root(const std::vector<SubType>& subs, int sub_instances, i
     const std::string name = "s" + std::to_string(i);
     scope.body << "    component " << sub.name << " " << name << "()\n";
     for (const Offer& port : sub.exports) {
-      scope.offers.push_back(Offer{name + "." + port.ref, port.type, {name}, port.must_bind});
+      scope.offers.push_back(
+          Offer{name + "." + port.ref, port.type, {name}, port.must_bind, false, port.stochastic});
     }
     for (const std::string& x : sub.data_ints) scope.guard_ints.push_back(name + "." + x);
     for (const std::string& b : sub.data_bools) scope.guard_bools.push_back(name + "." + b);

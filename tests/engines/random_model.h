@@ -25,6 +25,11 @@ struct RandomModelOptions {
   bool data = true;
   /// Sub-compounds, and connectors binding other connectors' exported ports.
   bool hierarchy = true;
+  /// Every connector a rendezvous of all its ports.
+  bool rendezvous_only = false;
+  /// Some exported ports of timed atom types carry a @stochastic annotation (exponential or
+  /// normal dates on one of the atom's clocks), at most one per connector.
+  bool stochastic = false;
 };
 
 /// A package named `package_name` whose root compound type is `Root()`. It passes `bipc check`,

@@ -139,6 +139,15 @@ void Generator::make_atom_type(int index) {
     std::vector<std::string> args;
     if (has_int(port.type)) args.push_back(one_of(type.ints));
     if (has_bool(port.type)) args.push_back(one_of(type.bools));
+    // Distributions of unbounded support: a clock already past the mean never misses it.
+    if (options_.stochastic && port.exported && !type.clocks.empty() && chance(40)) {
+      port.stochastic = true;
+      const bool normal = chance(50);
+      const std::string& clock = one_of(type.clocks);
+      const std::string params = number(1, 4) + (normal ? "," + number(1, 2) : "");
+      out << "    @stochastic(dist=\"" << (normal ? "normal" : "exponential") << "\", clk=" << clock
+          << ", param=\"" << params << "\")\n";
+    }
     out << "    " << (port.exported ? "export port " : "port ") << kPortTypeNames[port.type] << " "
         << port.name << "(" << join(args, ", ") << ")\n";
     type.ports.push_back(port);

@@ -17,7 +17,8 @@ void Generator::add_atom(Scope& scope, const std::string& name) {
              << (options_.data ? number(0, 4) : "") << ")\n";
   for (const AtomPort& port : type.ports) {
     if (!port.exported) continue;
-    scope.offers.push_back(Offer{name + "." + port.name, port.type, {name}, false});
+    scope.offers.push_back(
+        Offer{name + "." + port.name, port.type, {name}, false, false, port.stochastic});
   }
   for (const std::string& x : type.exported_ints) scope.guard_ints.push_back(name + "." + x);
   for (const std::string& b : type.exported_bools) scope.guard_bools.push_back(name + "." + b);
@@ -49,15 +50,18 @@ bool Generator::add_connector(Scope& scope, bool allow_export) {
   const int arity = one_of(std::vector<int>{1, 2, 2, 2, 3, 3, 4});
   std::vector<std::size_t> chosen;
   std::set<std::string> components;
+  bool stochastic = false;
   for (std::size_t i : candidates) {
     if (static_cast<int>(chosen.size()) == arity) break;
     const Offer& offer = scope.offers[i];
     if (std::any_of(offer.components.begin(), offer.components.end(),
-                    [&](const std::string& a) { return components.count(a) > 0; })) {
+                    [&](const std::string& a) { return components.count(a) > 0; }) ||
+        (stochastic && offer.stochastic)) {
       continue;
     }
     chosen.push_back(i);
     components.insert(offer.components.begin(), offer.components.end());
+    stochastic = stochastic || offer.stochastic;
   }
   const int ports = static_cast<int>(chosen.size());
 
@@ -66,6 +70,7 @@ bool Generator::add_connector(Scope& scope, bool allow_export) {
     const int shape = uniform(0, 99);
     if (shape >= 45) define = Define::kBroadcast;
     if (shape >= 85 && ports <= 3) define = Define::kAllTriggers;
+    if (options_.rendezvous_only) define = Define::kRendezvous;
   }
   const bool exports = allow_export && options_.hierarchy && chance(30) &&
                        (define == Define::kRendezvous || ports <= 3);
@@ -142,7 +147,7 @@ bool Generator::add_connector(Scope& scope, bool allow_export) {
   if (exports) {
     scope.offers.push_back(Offer{name + ".top", export_data ? kInt : kSig,
                                  std::vector<std::string>(components.begin(), components.end()),
-                                 true});
+                                 true, false, stochastic});
   } else {
     scope.top_level.push_back(std::move(made));
   }

@@ -38,6 +38,7 @@ struct AtomPort {
   int type = kSig;
   bool exported = true;
   int region = 0;
+  bool stochastic = false;  // carries a @stochastic annotation
 };
 
 struct AtomType {
@@ -55,6 +56,7 @@ struct Offer {
   std::vector<std::string> components;  // components it reaches: a connector binds each once
   bool must_bind = false;               // a connector's exported port: must be bound
   bool used = false;
+  bool stochastic = false;  // fires a @stochastic port: a connector binds at most one such
 };
 
 /// Define shapes of a connector type: `p0 p1`, `p0' p1 p2`, `p0' p1'`.

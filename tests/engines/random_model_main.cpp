@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
     app.add_flag("--no-priorities", no_priorities, "no priority rules");
     app.add_flag("--no-data", no_data, "no data, guards or actions");
     app.add_flag("--no-hierarchy", no_hierarchy, "no sub-compounds nor hierarchical connectors");
+    app.add_flag("--rendezvous", options.rendezvous_only, "every connector a rendezvous");
+    app.add_flag("--stochastic", options.stochastic,
+                 "@stochastic ports on timed atoms (with --clocks)");
     app.add_option("--package", package, "package name")->capture_default_str();
     try {
       app.parse(argc, argv);
