@@ -47,6 +47,7 @@ class FlatSteps final : public CompiledSteps {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
     touched_.assign(t_.atoms.size(), 0);
+    chosen_.assign(t_.ports.size(), 0);
     recomputed_.assign(t_.positions(), 0);
   }
 
@@ -58,6 +59,8 @@ class FlatSteps final : public CompiledSteps {
     asap_ = run.asap;
     first_enabled_ = run.first_enabled;
     timed_ = planner_ != nullptr || !layout_.untimed;
+    if (timed_ && t_.has_triggered) return false;
+    beyond_ = false;
     index_.reset(t_.positions());
     eager_.assign(t_.positions(), 0);
     eager_count_ = 0;
@@ -73,7 +76,7 @@ class FlatSteps final : public CompiledSteps {
     } catch (const CodeFault&) {
       return false;
     }
-    return true;
+    return !beyond_;
   }
 
   Outcome step(bool at_limit, StepInfo& info) override {
@@ -206,7 +209,7 @@ class FlatSteps final : public CompiledSteps {
     } catch (const CodeFault&) {
       return Outcome::Beyond;
     }
-    return Outcome::Fired;
+    return beyond_ ? Outcome::Beyond : Outcome::Fired;
   }
 
   /// What connector code finds its port parameters through (Frame::port_slot).
@@ -290,6 +293,7 @@ class FlatSteps final : public CompiledSteps {
     }
     std::copy_n(value_data_.begin() + c.value_data, c.data_size, state_->data.begin() + c.data);
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
+      if (c.triggered && !chosen_[i]) continue;
       if (!fire_port(t_.ports[i].atom, t_.ports[i].port)) return false;
     }
     return true;
@@ -304,7 +308,9 @@ class FlatSteps final : public CompiledSteps {
     }
     bool enabled = true;
     bool eager = false;
-    if (p < t_.connectors.size()) {
+    if (p < t_.connectors.size() && t_.connectors[p].triggered) {
+      enabled = recompute_broadcast(t_.connectors[p], eager);
+    } else if (p < t_.connectors.size()) {
       const FlatTables::Connector& c = t_.connectors[p];
       for (std::uint32_t i = c.first_port; i < c.ports_end && enabled; ++i) {
         const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
@@ -324,6 +330,26 @@ class FlatSteps final : public CompiledSteps {
       eager_[p] = now_eager;
       eager_count_ += now_eager ? 1 : -1;
     }
+  }
+
+  /// Whether a broadcast is enabled: some trigger offers; the offering ports are its interaction
+  /// (chosen_). Its offers must share one constraint (Runtime::add_largest_values), else the
+  /// Runtime enumerates its interactions (priorities of maximal progress) or, when it cannot,
+  /// fails: both beyond this path.
+  bool recompute_broadcast(const FlatTables::Connector& c, bool& eager) {
+    bool trigger = false, mixed = false;
+    const AtomPortValue* first = nullptr;
+    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
+      const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
+      chosen_[i] = offer.has_value() ? 1 : 0;
+      if (!offer) continue;
+      trigger = trigger || t_.ports[i].trigger;
+      if (first == nullptr) first = &*offer;
+      mixed = mixed || offer->constraint.urgency != first->constraint.urgency;
+    }
+    if (mixed && (trigger || !c.enumerated)) beyond_ = true;
+    eager = first != nullptr && first->constraint.urgency == bipc::Urgency::Eager;
+    return trigger;
   }
 
   /// recompute on a timed layout: the item's constraint too, the intersection of its ports'
@@ -387,6 +413,8 @@ class FlatSteps final : public CompiledSteps {
   std::uint64_t stamp_ = 0;
   std::vector<std::uint64_t> touched_, recomputed_;
   std::vector<Index> touched_list_;
+  std::vector<std::uint8_t> chosen_;  // per port of a broadcast: it offers (its interaction's)
+  bool beyond_ = false;               // a recomputed item is beyond this path: the step ends it
   // Timed steps: per position whether its item is enabled and its constraint; the items of
   // the step; stochastic mode: the plans per position, the race count, a draw's error.
   std::vector<std::uint8_t> enabled_;

@@ -23,14 +23,32 @@ bool covers_atom_type(const System& system, const ModelCode& code, Index t) {
                       [](const bipc::ir::Transition& tr) { return tr.resume.has_value(); });
 }
 
-/// Whether connector `k` is a listed rendezvous whose ports each bind one atom port.
+/// Whether the connector's define is a flat sequence of its ports with some triggers, and it
+/// has no data or code: under maximal progress it executes every offering port at once.
+bool is_plain_broadcast(const System& system, const Layout& layout, Index k) {
+  const ConnectorInstance& connector = system.connectors[k];
+  const auto& type = system.connector_types[connector.type];
+  if (!layout.untimed || !layout.maximal_only[k] || !type.data.empty() ||
+      !type.interactions.empty() || type.define.size() != connector.bound.size()) {
+    return false;
+  }
+  std::vector<std::uint8_t> seen(connector.bound.size(), 0);
+  bool trigger = false;
+  for (const bipc::ir::DefineNode& node : type.define) {
+    if (node.port >= seen.size() || !node.children.empty() || seen[node.port]) return false;
+    seen[node.port] = 1;
+    trigger = trigger || node.trigger;
+  }
+  return trigger;
+}
+
+/// Whether connector `k` is a listed rendezvous or plain broadcast whose ports each bind one
+/// atom port.
 bool covers_connector(const System& system, const Layout& layout, Index k) {
   const ConnectorInstance& connector = system.connectors[k];
   const auto& type = system.connector_types[connector.type];
   const std::size_t n = connector.bound.size();
-  if (n == 0 || n > kPortSetBits || type.resume != bipc::ir::ConnectorType::Resume::None) {
-    return false;
-  }
+  if (n == 0 || type.resume != bipc::ir::ConnectorType::Resume::None) return false;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& refs = connector.bound[i];
     if (refs.size() != 1 || refs.front().kind != PortRef::Kind::Atom ||
@@ -38,6 +56,8 @@ bool covers_connector(const System& system, const Layout& layout, Index k) {
       return false;
     }
   }
+  if (is_plain_broadcast(system, layout, k)) return true;
+  if (n > kPortSetBits) return false;
   const PortSet all = n == kPortSetBits ? ~PortSet{0} : (PortSet{1} << n) - 1;
   return layout.enumerated[k] && layout.defined[k].size() == 1 &&
          layout.defined[k].front().ports == all;
@@ -67,6 +87,9 @@ FlatTables::Connector connector_entry(const System& system, const Layout& layout
   entry.index = k;
   entry.type = connector.type;
   entry.first_port = static_cast<std::uint32_t>(tables.ports.size());
+  entry.triggered = is_plain_broadcast(system, layout, k);
+  entry.enumerated = layout.enumerated[k] != 0;
+  tables.has_triggered = tables.has_triggered || entry.triggered;
   for (const auto& refs : connector.bound) {
     const PortRef& ref = refs.front();
     const bipc::ir::Port& port = system.atom_types[system.atoms[ref.instance].type].ports[ref.port];
@@ -82,6 +105,12 @@ FlatTables::Connector connector_entry(const System& system, const Layout& layout
   entry.data_size = static_cast<std::uint32_t>(type.data.size());
   entry.value_data = tables.value_data_size;
   tables.value_data_size += entry.data_size;
+  if (entry.triggered) {
+    for (const bipc::ir::DefineNode& node : type.define) {
+      tables.ports[entry.first_port + node.port].trigger = node.trigger;
+    }
+    return entry;
+  }
   entry.code = layout.defined[k].front().code;
   if (entry.code >= 0) {
     const auto& interaction = type.interactions[static_cast<std::size_t>(entry.code)];

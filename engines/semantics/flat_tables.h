@@ -27,6 +27,7 @@ struct FlatTables {
     Index atom = 0, port = 0;
     std::uint32_t offer = 0;        // into the offers
     std::uint32_t first_param = 0;  // into `param_slots`
+    bool trigger = false;
   };
   struct Connector {
     Index index = 0;  // in System::connectors
@@ -37,6 +38,10 @@ struct FlatTables {
     int code = -1;                                // ConnectorType::interactions, or -1
     bool guarded = false;                         // a guard or an `up` to run
     bool has_down = false;
+    /// A broadcast (some ports are triggers; untimed layouts only): its one executable
+    /// interaction under maximal progress is every offering port, when a trigger offers.
+    bool triggered = false;
+    bool enumerated = false;  // Layout::enumerated
   };
   /// An internal port item: its atom and port, and its offer.
   struct Internal {
@@ -53,14 +58,16 @@ struct FlatTables {
   /// Per position: the @stochastic atom port its item fires, if any (DatePlanner's choice).
   std::vector<std::optional<std::pair<Index, Index>>> stochastic;
   std::uint32_t offer_count = 0, value_data_size = 0;
+  bool has_triggered = false;  // some connector is triggered
 
   std::size_t positions() const { return connectors.size() + internal.size(); }
 };
 
 /// The tables of `system` when the compiled step path covers it, nullopt otherwise. It covers
 /// systems without extern ports or functions, priorities, invariants or resume, whose atom
-/// types `code` compiles and whose connectors are listed rendezvous: one defined interaction
-/// of all their ports, each binding one atom port.
+/// types `code` compiles and whose connectors are listed and bind one atom port per port
+/// parameter: rendezvous (one defined interaction of all their ports), and on untimed layouts
+/// also broadcasts (a flat define with triggers) without data or `on` clauses.
 std::optional<FlatTables> flat_tables(const bipc::ir::System& system, const Layout& layout,
                                       const ModelCode& code);
 

@@ -105,16 +105,16 @@ TEST_P(GeneratedCode, ItsOwnCodeRuns) {
 }
 
 // The runs above compare the compiled step path with the interpreter only where it is taken:
-// these are the models it covers (rendezvous, untimed, timed or stochastic), the others it must
-// leave alone.
+// these are the models it covers (rendezvous, untimed, timed or stochastic, and untimed
+// broadcasts), the others it must leave alone.
 TEST(CompiledSteps, CoverTheRendezvousModels) {
   std::set<std::string> covered;
   for (const GeneratedModel& generated : generated_models()) {
     if (has_compiled_steps(generated.system(), generated.make_code)) covered.insert(generated.name);
   }
   const std::set<std::string> expected = {
-      "chain_10",    "channel",       "late_division", "late_nondeterminism",
-      "late_unsafe", "rendezvous_10", "work_10"};
+      "broadcast_10",        "chain_10",    "channel",       "late_division", "late_mixed_urgency",
+      "late_nondeterminism", "late_unsafe", "rendezvous_10", "work_10"};
   EXPECT_EQ(covered, expected);
 }
 
