@@ -23,18 +23,13 @@ RandomStream::RandomStream(std::uint64_t seed, std::uint64_t run_index) {
   key1_ = stream_mix(key0_ ^ kKeySalt);
 }
 
-std::uint64_t RandomStream::below(std::uint64_t n) {
+void RandomStream::set_below(std::uint64_t n) {
   if (n == 0) {
     std::fputs("smcbip: internal error: RandomStream::below(0)\n", stderr);
     std::abort();
   }
-  // 2^64 mod n: draws below it fall in the incomplete block [0, 2^64 mod n) and are redrawn;
-  // the rest cover each residue exactly floor(2^64 / n) times.
-  const std::uint64_t threshold = (0 - n) % n;
-  while (true) {
-    const std::uint64_t x = next_u64();
-    if (x >= threshold) return x % n;
-  }
+  below_n_ = n;
+  below_threshold_ = (0 - n) % n;
 }
 
 }  // namespace smcbip::engines

@@ -54,8 +54,18 @@ class RandomStream {
   }
 
   /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
-  /// as OpenBSD's arc4random_uniform). n must be positive; n == 0 aborts.
-  std::uint64_t below(std::uint64_t n);
+  /// as OpenBSD's arc4random_uniform). n must be positive; n == 0 aborts. Inline, with the
+  /// rejection threshold of the last n kept: schedulers draw among the same number of items
+  /// step after step, and a 64-bit division is a good part of a step.
+  std::uint64_t below(std::uint64_t n) {
+    if (n != below_n_) [[unlikely]] {
+      set_below(n);
+    }
+    while (true) {
+      const std::uint64_t x = next_u64();
+      if (x >= below_threshold_) return x % n;
+    }
+  }
 
   /// Skips `n` draws in O(1), as if next_u64() had been called n times.
   void discard(std::uint64_t n) { counter_ += n; }
@@ -72,6 +82,11 @@ class RandomStream {
   std::uint64_t key0_;
   std::uint64_t key1_;
   std::uint64_t counter_ = 0;
+  // below(): the last n and 2^64 mod n; draws below it fall in the incomplete block
+  // [0, 2^64 mod n) and are redrawn, the rest cover each residue floor(2^64 / n) times.
+  std::uint64_t below_n_ = 0, below_threshold_ = 0;
+  /// Keeps n and its threshold for below(); aborts on n == 0.
+  void set_below(std::uint64_t n);
 };
 
 }  // namespace smcbip::engines
