@@ -32,7 +32,7 @@ class ItemIndex {
   // tree_[i] (1-based): the sum of counts_ over positions [i - lowbit(i), i).
   std::vector<std::size_t> tree_;
   std::size_t total_ = 0;
-  std::size_t top_step_ = 0;  // the largest power of two at most positions()
+  std::size_t top_step_ = 0;  // the smallest power of two at least positions(); tree_ is one more
 };
 
 }  // namespace smcbip::engines
