@@ -1,0 +1,197 @@
+// The lexer of property files: names, numbers with time units, operators and comments.
+#include "monitors/parse/property_lexer.h"
+
+#include <array>
+#include <charconv>
+#include <utility>
+
+namespace smcbip::monitors::detail {
+
+namespace {
+
+bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
+
+// Longest first, so that `<=` wins over `<` and `=?` over `=`.
+constexpr std::array<std::string_view, 10> kTwoCharSymbols = {"<=", ">=", "==", "!=", "&&",
+                                                              "||", "->", "=?", "[]", "<>"};
+constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>";
+
+class Lexer {
+ public:
+  Lexer(std::string_view text, std::uint32_t file, bipc::Diagnostics& diagnostics)
+      : text_(text), file_(file), diagnostics_(diagnostics) {}
+
+  std::vector<Token> run() {
+    std::vector<Token> tokens;
+    for (;;) {
+      skip_space_and_comments();
+      Token token;
+      token.at = here();
+      if (pos_ >= text_.size()) {
+        tokens.push_back(std::move(token));
+        return tokens;
+      }
+      if (lex(token)) tokens.push_back(std::move(token));
+    }
+  }
+
+ private:
+  bipc::Location here() const { return {file_, line_, column_}; }
+  char peek(std::size_t ahead = 0) const {
+    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+  }
+  void advance(std::size_t n = 1) {
+    for (std::size_t i = 0; i < n && pos_ < text_.size(); ++i, ++pos_) {
+      if (text_[pos_] == '\n') {
+        ++line_;
+        column_ = 1;
+      } else {
+        ++column_;
+      }
+    }
+  }
+
+  void skip_space_and_comments() {
+    for (;;) {
+      const char c = peek();
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+        advance();
+      } else if (c == '/' && peek(1) == '/') {
+        while (pos_ < text_.size() && peek() != '\n') advance();
+      } else if (c == '/' && peek(1) == '*') {
+        const bipc::Location start = here();
+        advance(2);
+        while (pos_ < text_.size() && !(peek() == '*' && peek(1) == '/')) advance();
+        if (pos_ >= text_.size()) {
+          diagnostics_.error(start, "unterminated comment: expected '*/' before end of file");
+          return;
+        }
+        advance(2);
+      } else {
+        return;
+      }
+    }
+  }
+
+  // One token into `token`; false when the text there is an error (reported, skipped).
+  bool lex(Token& token) {
+    const char c = peek();
+    if (is_name_start(c)) {
+      const std::size_t start = pos_;
+      while (is_name_char(peek())) advance();
+      token.kind = TokenKind::Name;
+      token.text = std::string(text_.substr(start, pos_ - start));
+      return true;
+    }
+    if (is_digit(c)) return number(token);
+    for (std::string_view symbol : kTwoCharSymbols) {
+      if (text_.substr(pos_, 2) == symbol) {
+        token.kind = TokenKind::Symbol;
+        token.text = std::string(symbol);
+        advance(2);
+        return true;
+      }
+    }
+    if (kOneCharSymbols.find(c) != std::string_view::npos) {
+      token.kind = TokenKind::Symbol;
+      token.text = std::string(1, c);
+      advance();
+      return true;
+    }
+    const auto byte = static_cast<unsigned char>(c);
+    std::string shown = byte >= 0x20 && byte < 0x7F ? std::string("'") + c + "'" : "a byte";
+    if (shown == "a byte") {
+      constexpr std::string_view kHex = "0123456789ABCDEF";
+      shown = std::string("'\\x") + kHex[byte >> 4] + kHex[byte & 0xF] + "'";
+    }
+    diagnostics_.error(here(), "unexpected character " + shown + " in a property");
+    advance();
+    return false;
+  }
+
+  // Digits, an optional fraction and exponent, then an optional unit suffix (s, ms, us, ns).
+  bool number(Token& token) {
+    const std::size_t start = pos_;
+    const bipc::Location at = here();
+    while (is_digit(peek())) advance();
+    bool integral = true;
+    if (peek() == '.' && is_digit(peek(1))) {
+      integral = false;
+      advance();
+      while (is_digit(peek())) advance();
+    }
+    if ((peek() == 'e' || peek() == 'E') &&
+        (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
+      integral = false;
+      advance(2);
+      while (is_digit(peek())) advance();
+    }
+    const std::string_view digits = text_.substr(start, pos_ - start);
+    const std::size_t suffix_start = pos_;
+    while (is_name_char(peek())) advance();
+    const std::string_view suffix = text_.substr(suffix_start, pos_ - suffix_start);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error != std::errc() || end != digits.data() + digits.size()) {
+      diagnostics_.error(at, "number '" + std::string(digits) + "' is out of range");
+      return false;
+    }
+    static constexpr std::array<std::pair<std::string_view, TimeUnit>, 4> kUnits = {
+        {{"s", TimeUnit::Seconds},
+         {"ms", TimeUnit::Milliseconds},
+         {"us", TimeUnit::Microseconds},
+         {"ns", TimeUnit::Nanoseconds}}};
+    TimeUnit unit = TimeUnit::None;
+    if (!suffix.empty()) {
+      bool known = false;
+      for (const auto& [name, u] : kUnits) {
+        if (suffix == name) {
+          unit = u;
+          known = true;
+        }
+      }
+      // Reported, and the number kept without a unit: the parser goes on without a cascade.
+      if (!known) {
+        diagnostics_.error(at, "unknown time unit '" + std::string(suffix) + "' after '" +
+                                   std::string(digits) + "': expected s, ms, us or ns");
+      }
+    }
+    token.kind = TokenKind::Number;
+    token.text = std::string(digits);
+    token.number = value;
+    token.integral = integral;
+    token.unit = unit;
+    return true;
+  }
+
+  std::string_view text_;
+  std::uint32_t file_;
+  bipc::Diagnostics& diagnostics_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 1, column_ = 1;
+};
+
+}  // namespace
+
+std::vector<Token> lex_properties(std::string_view text, std::uint32_t file,
+                                  bipc::Diagnostics& diagnostics) {
+  return Lexer(text, file, diagnostics).run();
+}
+
+std::string describe(const Token& token) {
+  switch (token.kind) {
+    case TokenKind::End:
+      return "end of file";
+    case TokenKind::Name:
+      return "name '" + token.text + "'";
+    case TokenKind::Number:
+      return "number " + token.text;
+    case TokenKind::Symbol:
+      return "'" + token.text + "'";
+  }
+  return "?";
+}
+
+}  // namespace smcbip::monitors::detail

@@ -1,0 +1,585 @@
+// The property parser: recursive descent over the tokens of one file, building the AST.
+//
+// Hand-written like the BIP parser (bipc/parse/parser.h) for the same reasons: each error reads
+// `expected X, got Y` at the offending token, the parser resynchronises on the next statement so
+// one run reports independent errors, and nesting is bounded so hostile input gets a diagnostic.
+//
+// Formulas and state expressions share one precedence ladder, loosest first:
+//   ->  (right)   ||   &&   U R (right, with bounds)   ! X F G <> []   comparisons   + -   * / %
+//   unary -   primaries. An atomic predicate is whatever the comparison level reads.
+#include "monitors/parse/property_parser.h"
+
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <utility>
+
+#include "monitors/parse/property_checks.h"
+#include "monitors/parse/property_lexer.h"
+
+namespace smcbip::monitors {
+
+namespace {
+
+using detail::Token;
+using detail::TokenKind;
+
+// Thrown after an error was reported: the statement is abandoned and the parser resynchronises.
+struct Abandon {};
+
+constexpr int kMaxNestingDepth = 200;
+
+bool is_statement_keyword(const Token& t) {
+  return t.kind == TokenKind::Name && (t.text == "const" || t.text == "param" || t.text == "P" ||
+                                       t.text == "Pr" || t.text == "E");
+}
+
+// Words of the language that cannot name a constant or parameter.
+bool is_reserved(const Token& t) {
+  static constexpr std::string_view kReserved[] = {"X", "F", "G", "U", "R", "true", "false"};
+  if (is_statement_keyword(t)) return true;
+  for (std::string_view word : kReserved) {
+    if (t.text == word) return true;
+  }
+  return false;
+}
+
+class Parser {
+ public:
+  Parser(std::vector<Token> tokens, bipc::Diagnostics& diagnostics)
+      : tokens_(std::move(tokens)), diagnostics_(diagnostics) {}
+
+  PropertyFile file() {
+    PropertyFile out;
+    while (peek().kind != TokenKind::End) {
+      if (symbol(";")) continue;
+      statement_start_ = pos_;
+      try {
+        statement(out);
+      } catch (const Abandon&) {
+        resynchronise();
+      }
+    }
+    return out;
+  }
+
+ private:
+  // Tokens.
+  const Token& peek(std::size_t ahead = 0) const {
+    const std::size_t i = pos_ + ahead;
+    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  }
+  const Token& take() {
+    const Token& t = peek();
+    if (pos_ + 1 < tokens_.size()) ++pos_;
+    return t;
+  }
+  bool is_symbol(std::string_view text, std::size_t ahead = 0) const {
+    return peek(ahead).kind == TokenKind::Symbol && peek(ahead).text == text;
+  }
+  bool is_word(std::string_view text, std::size_t ahead = 0) const {
+    return peek(ahead).kind == TokenKind::Name && peek(ahead).text == text;
+  }
+  bool symbol(std::string_view text) {
+    if (!is_symbol(text)) return false;
+    take();
+    return true;
+  }
+  [[noreturn]] void fail(const std::string& expected) {
+    diagnostics_.error(peek().at, "expected " + expected + ", got " + describe(peek()));
+    throw Abandon{};
+  }
+  void expect(std::string_view text, const std::string& context) {
+    if (!symbol(text)) fail("'" + std::string(text) + "' " + context);
+  }
+  // After an error: on to the next `;`, or to a token that starts a line at its first column
+  // or is a statement keyword starting a line (statements end at the end of their line).
+  void resynchronise() {
+    // The failing token may itself start the next statement (a statement cut short at the end
+    // of its line); it is skipped only when the failed statement consumed nothing.
+    if (pos_ > statement_start_ && starts_statement_line(pos_)) return;
+    std::uint32_t line = peek().at.line;
+    take();
+    while (peek().kind != TokenKind::End) {
+      if (symbol(";")) return;
+      if (peek().at.line != line && starts_statement_line(pos_)) return;
+      line = take().at.line;
+    }
+  }
+  bool starts_statement_line(std::size_t i) const {
+    const Token& t = tokens_[i];
+    const bool first_on_line = i == 0 || tokens_[i - 1].at.line != t.at.line;
+    return first_on_line && (t.at.column == 1 || is_statement_keyword(t));
+  }
+
+  // Statements.
+  void statement(PropertyFile& out) {
+    if (is_word("const") || is_word("param")) {
+      out.declarations.push_back(declaration());
+    } else if (is_word("P") || is_word("Pr") || is_word("E")) {
+      out.queries.push_back(is_word("P") ? p_query() : is_word("Pr") ? pr_query() : e_query());
+    } else {
+      fail("a query (P, Pr or E) or a declaration (const or param)");
+    }
+    // Statements end with `;` or at the end of their line.
+    if (!symbol(";") && peek().kind != TokenKind::End &&
+        peek().at.line == tokens_[pos_ - 1].at.line) {
+      fail("';' or a new line after the statement");
+    }
+  }
+
+  Declaration declaration() {
+    Declaration d;
+    d.at = peek().at;
+    d.kind = take().text == "const" ? Declaration::Kind::Constant : Declaration::Kind::Parameter;
+    if ((is_word("int") || is_word("double")) && peek(1).kind == TokenKind::Name) take();
+    if (peek().kind != TokenKind::Name || is_reserved(peek())) fail("the name being declared");
+    d.name = take().text;
+    expect("=", "after the declared name");
+    if (d.kind == Declaration::Kind::Constant) {
+      d.value = number("the constant's value");
+      return d;
+    }
+    if (symbol("{")) {
+      do {
+        d.values.push_back(number("a parameter value"));
+      } while (symbol(","));
+      expect("}", "to close the list of values");
+      return d;
+    }
+    d.range = true;
+    d.values.push_back(number("the first value of the range (start:stop:step) or '{'"));
+    expect(":", "between the range's start and stop (start:stop:step)");
+    d.values.push_back(number("the range's stop"));
+    expect(":", "between the range's stop and step (start:stop:step)");
+    d.values.push_back(number("the range's step"));
+    return d;
+  }
+
+  Query p_query() {
+    Query q;
+    q.at = take().at;  // P
+    if (symbol("=?")) {
+      q.kind = Query::Kind::Estimate;
+    } else {
+      q.kind = Query::Kind::Hypothesis;
+      q.comparison = comparison("'=?' or a comparison (>=, >, <=, <) after P");
+      q.threshold = value("the probability threshold");
+    }
+    expect("[", "before the path formula");
+    q.formula = formula();
+    expect("]", "after the path formula");
+    return q;
+  }
+
+  Query pr_query() {
+    Query q;
+    q.at = take().at;  // Pr
+    q.pr_form = true;
+    expect("[", "after Pr (Pr[<=T] or Pr[#<=K])");
+    q.run = run_bound();
+    expect("]", "after the run bound");
+    expect("(", "before the path formula");
+    q.formula = formula();
+    expect(")", "after the path formula");
+    if (is_symbol(">=") || is_symbol(">") || is_symbol("<=") || is_symbol("<")) {
+      q.kind = Query::Kind::Hypothesis;
+      q.comparison = comparison("a comparison");
+      q.threshold = value("the probability threshold");
+    }
+    return q;
+  }
+
+  Query e_query() {
+    Query q;
+    q.kind = Query::Kind::Expectation;
+    q.at = take().at;  // E
+    q.pr_form = true;
+    expect("[", "after E (E[<=T; N])");
+    q.run = run_bound();
+    expect(";", "between the run bound and the number of runs");
+    q.runs = value("the number of runs");
+    expect("]", "after the number of runs");
+    expect("(", "before max: or min:");
+    if (!is_word("max") && !is_word("min")) fail("'max' or 'min'");
+    q.maximum = take().text == "max";
+    expect(":", "after " + std::string(q.maximum ? "max" : "min"));
+    q.observed = expression();
+    expect(")", "after the observed expression");
+    return q;
+  }
+
+  // `<=T` (time) or `#<=K` (steps), inside a query's brackets.
+  Bound run_bound() {
+    Bound b;
+    if (symbol("#")) {
+      expect("<=", "after '#' (#<=K bounds the run by K steps)");
+      b.kind = Bound::Kind::Steps;
+      b.high = value("the number of steps");
+      return b;
+    }
+    if (!symbol("<=")) fail("'<=T' or '#<=K' (the run's time or step bound)");
+    b.kind = Bound::Kind::Time;
+    b.low = zero_at(peek().at);
+    b.high = value("the run's time bound");
+    return b;
+  }
+
+  Comparison comparison(const std::string& expected) {
+    static constexpr std::pair<std::string_view, Comparison> kComparisons[] = {
+        {">=", Comparison::GreaterEqual},
+        {">", Comparison::Greater},
+        {"<=", Comparison::LessEqual},
+        {"<", Comparison::Less}};
+    for (const auto& [text, comparison] : kComparisons) {
+      if (symbol(text)) return comparison;
+    }
+    fail(expected);
+  }
+
+  // Values: numbers as written, or names of constants and parameters.
+  static Value value_of(const Token& t) {
+    Value v;
+    v.at = t.at;
+    v.text = t.text;
+    v.number = t.number;
+    v.integral = t.integral;
+    v.unit = t.unit;
+    return v;
+  }
+  static Value zero_at(bipc::Location at) {
+    Value v;
+    v.at = at;
+    v.text = "0";
+    v.integral = true;
+    return v;
+  }
+  // A number, possibly negative (constants and parameters; checks refuse negative bounds).
+  Value number(const std::string& expected) {
+    const bool negative = is_symbol("-") && peek(1).kind == TokenKind::Number;
+    if (negative) take();
+    if (peek().kind != TokenKind::Number) fail(expected);
+    Value v = value_of(take());
+    if (negative) {
+      v.text = "-" + v.text;
+      v.number = -v.number;
+    }
+    return v;
+  }
+  Value value(const std::string& expected) {
+    if (peek().kind == TokenKind::Name && !is_reserved(peek())) {
+      Value v;
+      v.at = peek().at;
+      v.name = take().text;
+      return v;
+    }
+    return number(expected + " (a number or a declared name)");
+  }
+
+  // Formulas.
+  struct DepthGuard {
+    Parser& parser;
+    explicit DepthGuard(Parser& p) : parser(p) {
+      if (++parser.depth_ > kMaxNestingDepth) {
+        parser.diagnostics_.error(parser.peek().at, "property nested too deeply (more than " +
+                                                        std::to_string(kMaxNestingDepth) +
+                                                        " levels)");
+        throw Abandon{};
+      }
+    }
+    ~DepthGuard() { --parser.depth_; }
+  };
+
+  static std::unique_ptr<Formula> make(Formula::Kind kind, bipc::Location at) {
+    auto f = std::make_unique<Formula>();
+    f->kind = kind;
+    f->at = at;
+    return f;
+  }
+
+  std::unique_ptr<Formula> formula() { return implies(); }
+
+  std::unique_ptr<Formula> implies() {
+    const DepthGuard guard(*this);
+    std::unique_ptr<Formula> left = disjunction();
+    if (!is_symbol("->")) return left;
+    auto f = make(Formula::Kind::Implies, take().at);
+    f->operands.push_back(std::move(left));
+    f->operands.push_back(implies());
+    return f;
+  }
+
+  std::unique_ptr<Formula> disjunction() {
+    std::unique_ptr<Formula> left = conjunction();
+    while (is_symbol("||")) {
+      auto f = make(Formula::Kind::Or, take().at);
+      f->operands.push_back(std::move(left));
+      f->operands.push_back(conjunction());
+      left = std::move(f);
+    }
+    return left;
+  }
+
+  std::unique_ptr<Formula> conjunction() {
+    std::unique_ptr<Formula> left = until();
+    while (is_symbol("&&")) {
+      auto f = make(Formula::Kind::And, take().at);
+      f->operands.push_back(std::move(left));
+      f->operands.push_back(until());
+      left = std::move(f);
+    }
+    return left;
+  }
+
+  std::unique_ptr<Formula> until() {
+    const DepthGuard guard(*this);
+    std::unique_ptr<Formula> left = unary();
+    if (!is_word("U") && !is_word("R")) return left;
+    const Formula::Kind kind = is_word("U") ? Formula::Kind::Until : Formula::Kind::Release;
+    auto f = make(kind, take().at);
+    f->bound = temporal_bound();
+    f->operands.push_back(std::move(left));
+    f->operands.push_back(until());
+    return f;
+  }
+
+  std::unique_ptr<Formula> unary() {
+    const DepthGuard guard(*this);
+    Formula::Kind kind = Formula::Kind::True;
+    if (is_symbol("!")) {
+      kind = Formula::Kind::Not;
+    } else if (is_word("X")) {
+      kind = Formula::Kind::Next;
+    } else if (is_word("F") || is_symbol("<>")) {
+      kind = Formula::Kind::Finally;
+    } else if (is_word("G") || is_symbol("[]")) {
+      kind = Formula::Kind::Globally;
+    } else {
+      return primary_formula();
+    }
+    auto f = make(kind, take().at);
+    if (kind == Formula::Kind::Finally || kind == Formula::Kind::Globally) {
+      f->bound = temporal_bound();
+    }
+    f->operands.push_back(unary());
+    return f;
+  }
+
+  // `[a,b]`, `{k}`, `<=T`, `<=#k`, or nothing.
+  Bound temporal_bound() {
+    Bound b;
+    if (symbol("[")) {
+      b.kind = Bound::Kind::Time;
+      b.low = value("the interval's lower bound");
+      expect(",", "between the interval's bounds");
+      b.high = value("the interval's upper bound");
+      expect("]", "to close the interval");
+    } else if (symbol("{")) {
+      b.kind = Bound::Kind::Steps;
+      b.high = value("the number of steps");
+      expect("}", "after the number of steps");
+    } else if (is_symbol("<=")) {
+      const bipc::Location at = take().at;
+      if (symbol("#")) {
+        b.kind = Bound::Kind::Steps;
+        b.high = value("the number of steps");
+      } else {
+        b.kind = Bound::Kind::Time;
+        b.low = zero_at(at);
+        b.high = value("the time bound");
+      }
+    }
+    return b;
+  }
+
+  static bool starts_expression_operator(const Token& t) {
+    if (t.kind != TokenKind::Symbol) return false;
+    static constexpr std::string_view kOperators[] = {"+",  "-", "*",  "/",  "%", "<",
+                                                      "<=", ">", ">=", "==", "!="};
+    for (std::string_view op : kOperators) {
+      if (t.text == op) return true;
+    }
+    return false;
+  }
+
+  // true, false, a parenthesised formula, or an atomic predicate. A parenthesised atom may be
+  // the first operand of arithmetic or a comparison: `(x + 1) * 2 > y`.
+  std::unique_ptr<Formula> primary_formula() {
+    const bipc::Location at = peek().at;
+    if ((is_word("true") || is_word("false")) && !starts_expression_operator(peek(1))) {
+      return make(take().text == "true" ? Formula::Kind::True : Formula::Kind::False, at);
+    }
+    std::unique_ptr<Expr> first;
+    if (symbol("(")) {
+      std::unique_ptr<Formula> inner = formula();
+      expect(")", "to close the parenthesis");
+      if (inner->kind != Formula::Kind::Atom || !starts_expression_operator(peek())) return inner;
+      first = std::move(inner->atom);
+    }
+    auto f = make(Formula::Kind::Atom, at);
+    f->atom = comparison_expression(std::move(first));
+    return f;
+  }
+
+  // State expressions.
+  static std::unique_ptr<Expr> make_expr(Expr::Kind kind, bipc::Location at) {
+    auto e = std::make_unique<Expr>();
+    e->kind = kind;
+    e->at = at;
+    return e;
+  }
+  static std::unique_ptr<Expr> binary(Expr::Kind kind, bipc::Location at,
+                                      std::unique_ptr<Expr> left, std::unique_ptr<Expr> right) {
+    auto e = make_expr(kind, at);
+    e->operands.push_back(std::move(left));
+    e->operands.push_back(std::move(right));
+    return e;
+  }
+
+  std::unique_ptr<Expr> expression() { return comparison_expression(nullptr); }
+
+  // `first`: an operand already read (a parenthesised one), or null.
+  std::unique_ptr<Expr> comparison_expression(std::unique_ptr<Expr> first) {
+    const DepthGuard guard(*this);
+    std::unique_ptr<Expr> left = additive(std::move(first));
+    static constexpr std::pair<std::string_view, Expr::Kind> kComparisons[] = {
+        {"<", Expr::Kind::Less},    {"<=", Expr::Kind::LessEqual},
+        {">", Expr::Kind::Greater}, {">=", Expr::Kind::GreaterEqual},
+        {"==", Expr::Kind::Equal},  {"!=", Expr::Kind::NotEqual}};
+    for (const auto& [text, kind] : kComparisons) {
+      if (is_symbol(text)) {
+        const bipc::Location at = take().at;
+        return binary(kind, at, std::move(left), additive(nullptr));
+      }
+    }
+    return left;
+  }
+
+  std::unique_ptr<Expr> additive(std::unique_ptr<Expr> first) {
+    std::unique_ptr<Expr> left = multiplicative(std::move(first));
+    while (is_symbol("+") || is_symbol("-")) {
+      const Expr::Kind kind = peek().text == "+" ? Expr::Kind::Add : Expr::Kind::Subtract;
+      const bipc::Location at = take().at;
+      left = binary(kind, at, std::move(left), multiplicative(nullptr));
+    }
+    return left;
+  }
+
+  std::unique_ptr<Expr> multiplicative(std::unique_ptr<Expr> first) {
+    std::unique_ptr<Expr> left = first ? std::move(first) : prefix();
+    while (is_symbol("*") || is_symbol("/") || is_symbol("%")) {
+      const Expr::Kind kind = peek().text == "*"   ? Expr::Kind::Multiply
+                              : peek().text == "/" ? Expr::Kind::Divide
+                                                   : Expr::Kind::Modulo;
+      const bipc::Location at = take().at;
+      left = binary(kind, at, std::move(left), prefix());
+    }
+    return left;
+  }
+
+  std::unique_ptr<Expr> prefix() {
+    const DepthGuard guard(*this);
+    if (!is_symbol("-")) return primary_expression();
+    auto e = make_expr(Expr::Kind::Negate, take().at);
+    e->operands.push_back(prefix());
+    return e;
+  }
+
+  std::unique_ptr<Expr> primary_expression() {
+    const Token& t = peek();
+    if (t.kind == TokenKind::Number) {
+      auto e = make_expr(Expr::Kind::Number, t.at);
+      e->value = value_of(take());
+      return e;
+    }
+    if (symbol("(")) {
+      std::unique_ptr<Expr> inner = expression();
+      expect(")", "to close the parenthesis");
+      return inner;
+    }
+    if (t.kind != TokenKind::Name) fail("a formula or an expression");
+    if (t.text == "true" || t.text == "false") {
+      auto e = make_expr(Expr::Kind::Bool, t.at);
+      e->boolean = take().text == "true";
+      return e;
+    }
+    if (is_symbol("(", 1)) return call();
+    auto e = make_expr(Expr::Kind::Name, t.at);
+    e->path = path();
+    return e;
+  }
+
+  // A dotted path: Channel.id_channel, Syst.node3.status.
+  std::string path() {
+    std::string out = take().text;
+    while (is_symbol(".")) {
+      take();
+      if (peek().kind != TokenKind::Name) fail("a name after '.'");
+      out += "." + take().text;
+    }
+    return out;
+  }
+
+  // abs(e), min(a, b), max(a, b), fired(connector).
+  std::unique_ptr<Expr> call() {
+    const Token& name = peek();
+    const bipc::Location at = name.at;
+    const std::string function = take().text;
+    take();  // (
+    if (function == "fired") {
+      auto e = make_expr(Expr::Kind::Fired, at);
+      if (peek().kind != TokenKind::Name) fail("the name of a connector (or atom.port) in fired()");
+      e->path = path();
+      expect(")", "after the name in fired()");
+      return e;
+    }
+    const std::size_t arity = function == "abs"                        ? 1
+                              : function == "min" || function == "max" ? 2
+                                                                       : 0;
+    if (arity == 0) {
+      diagnostics_.error(at,
+                         "unknown function '" + function + "': expected abs, min, max or fired");
+      throw Abandon{};
+    }
+    auto e = make_expr(Expr::Kind::Call, at);
+    e->path = function;
+    e->operands.push_back(expression());
+    if (arity == 2) {
+      expect(",", "between the arguments of " + function);
+      e->operands.push_back(expression());
+    }
+    expect(")", "after the argument" + std::string(arity == 2 ? "s" : "") + " of " + function);
+    return e;
+  }
+
+  std::vector<Token> tokens_;
+  bipc::Diagnostics& diagnostics_;
+  std::size_t pos_ = 0;
+  std::size_t statement_start_ = 0;
+  int depth_ = 0;
+};
+
+}  // namespace
+
+ParsedProperties parse_properties(std::string_view text, const std::string& path) {
+  ParsedProperties parsed;
+  const std::uint32_t file = parsed.sources.add(path);
+  std::vector<Token> tokens = detail::lex_properties(text, file, parsed.diagnostics);
+  parsed.file = Parser(std::move(tokens), parsed.diagnostics).file();
+  if (parsed.ok()) detail::check_properties(parsed.file, parsed.diagnostics);
+  parsed.diagnostics.sort_by_location();
+  return parsed;
+}
+
+ParsedProperties load_properties(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    ParsedProperties parsed;
+    parsed.diagnostics.error({parsed.sources.add(path), 0, 0}, "cannot read the property file");
+    return parsed;
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_properties(text, path);
+}
+
+}  // namespace smcbip::monitors

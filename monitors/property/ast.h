@@ -1,0 +1,141 @@
+// The property language of PROPERTIES.md as parsed: declarations, queries, path formulas and
+// the state expressions of their atomic predicates, with the positions they were read at.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bipc/diagnostics.h"
+
+namespace smcbip::monitors {
+
+using bipc::Location;
+
+/// A time unit written after a number (`10ms`); None when the number has no suffix (the model's
+/// clock unit, milliseconds by default).
+enum class TimeUnit : std::uint8_t { None, Seconds, Milliseconds, Microseconds, Nanoseconds };
+
+/// A number as written, or a name of a constant or parameter.
+struct Value {
+  Location at;
+  std::string name;  // empty for a number
+  std::string text;  // the number as written, without its unit
+  double number = 0.0;
+  bool integral = false;  // written without a fraction or exponent
+  TimeUnit unit = TimeUnit::None;
+
+  bool is_name() const { return !name.empty(); }
+};
+
+/// The bound of a temporal operator or of a run: none, a time interval [low, high] (`<=T` is
+/// [0, T]), or a number of steps (`{k}`, `<=#k`).
+struct Bound {
+  enum class Kind : std::uint8_t { None, Time, Steps } kind = Kind::None;
+  Value low, high;  // Time: both; Steps: high
+};
+
+/// A state expression (the inside of an atomic predicate): arithmetic, comparisons and the
+/// functions PROPERTIES.md allows over data, places and clocks of the model.
+struct Expr {
+  enum class Kind : std::uint8_t {
+    Number,  // value
+    Bool,    // boolean
+    Name,    // path, e.g. Channel.id_channel or Receiver.c2
+    Negate,  // -a
+    Add,
+    Subtract,
+    Multiply,
+    Divide,
+    Modulo,
+    Less,
+    LessEqual,
+    Greater,
+    GreaterEqual,
+    Equal,
+    NotEqual,
+    Call,  // function(args): abs, min, max
+    Fired  // fired(connector): the step fired that interaction
+  } kind = Kind::Number;
+  Location at;
+  Value value;
+  bool boolean = false;
+  std::string path;  // Name, Fired: the dotted path; Call: the function
+  std::vector<std::unique_ptr<Expr>> operands;
+};
+
+/// A path formula (BLTL with nesting, MTL with intervals). Atomic predicates hold an Expr.
+struct Formula {
+  enum class Kind : std::uint8_t {
+    True,
+    False,
+    Atom,
+    Not,
+    And,
+    Or,
+    Implies,
+    Next,
+    Finally,
+    Globally,
+    Until,
+    Release
+  } kind = Kind::True;
+  Location at;
+  Bound bound;                 // Finally, Globally, Until, Release (and Next: none)
+  std::unique_ptr<Expr> atom;  // Atom
+  std::vector<std::unique_ptr<Formula>> operands;  // one (unary) or two (binary)
+};
+
+/// How a query compares the probability with its threshold (Hypothesis).
+enum class Comparison : std::uint8_t { GreaterEqual, Greater, LessEqual, Less };
+
+/// One query of a property file.
+struct Query {
+  enum class Kind : std::uint8_t {
+    Estimate,     // P=? [ phi ], Pr[<=T](phi)
+    Hypothesis,   // P>=theta [ phi ], Pr[<=T](phi) >= theta
+    Expectation,  // E[<=T; N](max: expr)
+  } kind = Kind::Estimate;
+  Location at;
+  Bound run;             // [<=T] or [#<=K]; Kind::None: the formula's horizon bounds the run
+  bool pr_form = false;  // written Pr[...](...) (UPPAAL) rather than P...[ ] (PRISM)
+  Comparison comparison = Comparison::GreaterEqual;
+  Value threshold;                   // Hypothesis
+  std::unique_ptr<Formula> formula;  // Estimate, Hypothesis
+  // Expectation: the runs' number, whether the maximum or minimum over each run is taken, and
+  // the expression.
+  Value runs;
+  bool maximum = true;
+  std::unique_ptr<Expr> observed;
+};
+
+/// `const NAME = value` or `param NAME = start:stop:step` / `{v1, v2, ...}`.
+struct Declaration {
+  enum class Kind : std::uint8_t { Constant, Parameter } kind = Kind::Constant;
+  Location at;
+  std::string name;
+  Value value;                // Constant
+  std::vector<Value> values;  // Parameter: a list, or start, stop, step of a range
+  bool range = false;         // Parameter: values are start, stop, step
+};
+
+/// The declarations and queries of one property file, in file order.
+struct PropertyFile {
+  std::vector<Declaration> declarations;
+  std::vector<Query> queries;
+};
+
+/// The normalised text of a formula or expression: one space around binary operators,
+/// parentheses exactly where precedence needs them, bounds as `[a,b]` / `{k}`.
+std::string to_string(const Expr& expr);
+std::string to_string(const Formula& formula);
+std::string to_string(const Bound& bound);
+std::string to_string(const Value& value);
+/// The normalised query, in the form it was written: `P=? [ phi ]`, `P>=0.9 [ phi ]`,
+/// `Pr[<=100](phi)`, `Pr[<=100](phi) >= 0.9`, `E[<=100; 50](max: expr)`.
+std::string to_string(const Query& query);
+std::string to_string(const Declaration& declaration);
+
+}  // namespace smcbip::monitors

@@ -1,0 +1,125 @@
+// The property parser: golden files (tests/monitors/properties/{valid,invalid}/*.mtl, each with
+// the .expected text beside it) and the laws of the normalised text.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "monitors/monitors.h"
+
+namespace smcbip::monitors {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kGoldenDir = fs::path(SMCBIP_SOURCE_DIR) / "tests/monitors/properties";
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The declarations then the queries, normalised, one per line.
+std::string normalised(const PropertyFile& file) {
+  std::string out;
+  for (const Declaration& d : file.declarations) out += to_string(d) + "\n";
+  for (const Query& q : file.queries) out += to_string(q) + "\n";
+  return out;
+}
+
+/// The golden files of one folder, by name.
+std::vector<std::string> golden_names(const std::string& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(kGoldenDir / folder)) {
+    if (entry.path().extension() == ".mtl") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// What the golden file `folder/name.mtl` gives: its normalised text, or its diagnostics (the
+/// file named without its folder, so the expectation does not depend on where the tree is).
+std::string golden_output(const std::string& folder, const std::string& name) {
+  const ParsedProperties parsed =
+      parse_properties(read(kGoldenDir / folder / (name + ".mtl")), name + ".mtl");
+  return parsed.ok() ? normalised(parsed.file) : parsed.diagnostics.format(parsed.sources);
+}
+
+class ValidProperties : public ::testing::TestWithParam<std::string> {};
+class InvalidProperties : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ValidProperties, ParseToTheirNormalisedText) {
+  const ParsedProperties parsed =
+      parse_properties(read(kGoldenDir / "valid" / (GetParam() + ".mtl")), GetParam() + ".mtl");
+  ASSERT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  EXPECT_EQ(normalised(parsed.file), read(kGoldenDir / "valid" / (GetParam() + ".expected")));
+}
+
+// The normalised text reads back as itself: it loses nothing the parser keeps.
+TEST_P(ValidProperties, NormalisedTextIsAFixedPoint) {
+  const std::string once = golden_output("valid", GetParam());
+  const ParsedProperties again = parse_properties(once, "normalised.mtl");
+  ASSERT_TRUE(again.ok()) << once << again.diagnostics.format(again.sources);
+  EXPECT_EQ(normalised(again.file), once);
+}
+
+TEST_P(InvalidProperties, ReportTheirErrors) {
+  EXPECT_EQ(golden_output("invalid", GetParam()),
+            read(kGoldenDir / "invalid" / (GetParam() + ".expected")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, ValidProperties, ::testing::ValuesIn(golden_names("valid")),
+                         [](const auto& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(Golden, InvalidProperties, ::testing::ValuesIn(golden_names("invalid")),
+                         [](const auto& info) { return info.param; });
+
+std::string formula_text(const std::string& formula) {
+  const ParsedProperties parsed = parse_properties("P=? [ " + formula + " ]", "f.mtl");
+  if (!parsed.ok()) return parsed.diagnostics.format(parsed.sources);
+  return to_string(*parsed.file.queries.at(0).formula);
+}
+
+TEST(PropertyParser, BindsOperatorsByPrecedence) {
+  EXPECT_EQ(formula_text("a || b && c"), "a || b && c");
+  EXPECT_EQ(formula_text("(a || b) && c"), "(a || b) && c");
+  EXPECT_EQ(formula_text("a -> b -> c"), "a -> b -> c");
+  EXPECT_EQ(formula_text("(a -> b) -> c"), "(a -> b) -> c");
+  EXPECT_EQ(formula_text("a U[0,5] b U[1,2] c"), "a U[0,5] b U[1,2] c");
+  EXPECT_EQ(formula_text("(a U[0,5] b) U[1,2] c"), "(a U[0,5] b) U[1,2] c");
+  EXPECT_EQ(formula_text("!a && b"), "!a && b");
+  EXPECT_EQ(formula_text("!(a && b)"), "!(a && b)");
+  EXPECT_EQ(formula_text("F[0,10] a U b"), "F[0,10] a U b");
+  EXPECT_EQ(formula_text("F[0,10] (a U b)"), "F[0,10] (a U b)");
+  EXPECT_EQ(formula_text("x + 1 * 2 > y - z - w"), "x + 1 * 2 > y - z - w");
+  EXPECT_EQ(formula_text("(x + 1) * 2 > y - (z - w)"), "(x + 1) * 2 > y - (z - w)");
+  EXPECT_EQ(formula_text("--x == -(-x)"), "--x == --x");
+}
+
+TEST(PropertyParser, ReadsTheAlternativeSpellings) {
+  EXPECT_EQ(formula_text("<>[0,10] a"), "F[0,10] a");
+  EXPECT_EQ(formula_text("[][0,10] a"), "G[0,10] a");
+  EXPECT_EQ(formula_text("F<=10 a"), "F[0,10] a");
+  EXPECT_EQ(formula_text("F<=#10 a"), "F{10} a");
+  EXPECT_EQ(formula_text("G{3} (x > 1)"), "G{3} (x > 1)");
+}
+
+TEST(PropertyParser, RefusesNestingBeyondItsLimit) {
+  const std::string deep = std::string(300, '(') + "a" + std::string(300, ')');
+  const ParsedProperties parsed = parse_properties("P=? [ " + deep + " ]", "deep.mtl");
+  ASSERT_FALSE(parsed.ok());
+  EXPECT_NE(parsed.diagnostics.format(parsed.sources).find("nested too deeply"), std::string::npos);
+}
+
+TEST(PropertyParser, ReportsAnUnreadableFile) {
+  const ParsedProperties parsed = load_properties("/nonexistent/property.mtl");
+  ASSERT_FALSE(parsed.ok());
+  EXPECT_EQ(parsed.diagnostics.format(parsed.sources),
+            "/nonexistent/property.mtl:0:0: error: cannot read the property file\n");
+}
+
+}  // namespace
+}  // namespace smcbip::monitors
