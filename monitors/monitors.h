@@ -4,3 +4,4 @@
 
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"
+#include "monitors/resolve/resolve_names.h"

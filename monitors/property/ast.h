@@ -37,6 +37,22 @@ struct Bound {
   Value low, high;  // Time: both; Steps: high
 };
 
+/// What a name in a state expression refers to once resolved against a model
+/// (resolve_names.h): indices into the IR, or into the file's declarations.
+struct Reference {
+  enum class Kind : std::uint8_t {
+    Unresolved,
+    Data,          // atom, data slot of its type
+    Place,         // atom, place of its type
+    Clock,         // atom, clock of its type
+    Constant,      // index: PropertyFile::declarations
+    Connector,     // index: System::connectors (fired)
+    InternalPort,  // atom, port of its type (fired)
+  } kind = Kind::Unresolved;
+  std::uint32_t atom = 0;
+  std::uint32_t index = 0;
+};
+
 /// A state expression (the inside of an atomic predicate): arithmetic, comparisons and the
 /// functions PROPERTIES.md allows over data, places and clocks of the model.
 struct Expr {
@@ -64,6 +80,8 @@ struct Expr {
   bool boolean = false;
   std::string path;  // Name, Fired: the dotted path; Call: the function
   std::vector<std::unique_ptr<Expr>> operands;
+  Reference reference;   // Name, Fired, once resolved
+  bool is_bool = false;  // once resolved: a condition rather than a number
 };
 
 /// A path formula (BLTL with nesting, MTL with intervals). Atomic predicates hold an Expr.
