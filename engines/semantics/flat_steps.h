@@ -66,7 +66,7 @@ class FlatSteps final : public CompiledSteps {
     eager_count_ = 0;
     enabled_.assign(t_.positions(), 0);
     raw_.assign(t_.positions(), Constraint{});
-    plans_.assign(t_.positions(), Planned{});
+    plans_.assign(t_.positions(), DatePlanner::Plan{});
     generation_ = 1;
     try {
       for (Index a = 0; a < t_.atoms.size(); ++a) {
@@ -96,13 +96,6 @@ class FlatSteps final : public CompiledSteps {
     Interval window;
     TimeValue date = 0;  // stochastic mode: its planned date
   };
-  /// DatePlanner's plan of an item, per position.
-  struct Planned {
-    Constraint offered;
-    TimeValue date = 0;
-    std::uint64_t seen = 0;  // the last race that found the item enabled
-  };
-
   /// A step on a timed layout or in stochastic mode: the items cut to the waiting window (as
   /// Runtime::compute_items lists them), then the Scheduler's choice among them.
   Outcome timed_step(bool at_limit, StepInfo& info) {
@@ -116,6 +109,7 @@ class FlatSteps final : public CompiledSteps {
     items_.clear();
     for (std::uint32_t p = 0; p < t_.positions(); ++p) {
       if (!enabled_[p]) continue;
+      // Copied field by field for the reason recompute_timed gives.
       Listed& item = items_.emplace_back();
       item.position = p;
       item.window.left = raw_[p].interval.left;
@@ -149,20 +143,13 @@ class FlatSteps final : public CompiledSteps {
   bool race(std::optional<std::pair<std::size_t, TimeValue>>& choice) {
     ++generation_;
     for (Listed& item : items_) {
-      Planned& planned = plans_[item.position];
-      const Constraint& offered = raw_[item.position];
-      const bool kept = planned.seen + 1 == generation_ &&
-                        planned.offered.urgency == offered.urgency &&
-                        planned.offered.interval == offered.interval;
-      if (!kept) {
-        if (!planner_->draw_date(*runtime_, t_.stochastic[item.position], offered, planned.date,
-                                 problem_)) {
-          return false;
-        }
-        planned.offered = offered;
+      DatePlanner::Plan& plan = plans_[item.position];
+      const auto stochastic = [&] { return t_.stochastic[item.position]; };
+      if (!planner_->renew(*runtime_, plan, generation_, raw_[item.position], stochastic,
+                           problem_)) {
+        return false;
       }
-      planned.seen = generation_;
-      item.date = planned.date;
+      item.date = plan.date;
     }
     const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
     const auto date = [&](std::size_t i) { return items_[i].date; };
@@ -420,7 +407,7 @@ class FlatSteps final : public CompiledSteps {
   std::vector<std::uint8_t> enabled_;
   std::vector<Constraint> raw_;
   std::vector<Listed> items_;
-  std::vector<Planned> plans_;
+  std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
   std::uint64_t generation_ = 1;
   std::string problem_;
 };

@@ -14,13 +14,6 @@ TimeValue uniform_date(const Interval& window, RandomStream& random) {
 
 namespace {
 
-bool same(const Constraint& a, const Constraint& b) {
-  const Interval& x = a.interval;
-  const Interval& y = b.interval;
-  return a.urgency == b.urgency && x.left == y.left && x.right == y.right &&
-         x.left_open == y.left_open && x.right_open == y.right_open;
-}
-
 /// `delay` nanoseconds after `from`, saturating at +infinity.
 TimeValue after(TimeValue from, double delay) {
   if (!(delay < static_cast<double>(kPlusInfinity - from))) return kPlusInfinity;
@@ -113,14 +106,14 @@ std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port_of(Index k,
   return std::nullopt;
 }
 
-DatePlanner::Planned& DatePlanner::plan_of(const Runtime& runtime, const Item& item) {
+DatePlanner::Plan& DatePlanner::plan_of(const Runtime& runtime, const Item& item) {
   if (item.kind != Item::Kind::Interaction) return port_plans_[first_port_[item.atom] + item.port];
   const InteractionValue& value = runtime.values()[item.value];
-  std::vector<Planned>& direct = connector_plans_[value.connector];
+  std::vector<Plan>& direct = connector_plans_[value.connector];
   if (value.defined < direct.size()) return direct[value.defined];
   key_of(runtime, item);
   auto found = plans_.find(std::span<const std::pair<Index, Index>>(key_));
-  if (found == plans_.end()) found = plans_.emplace(key_, Planned{}).first;
+  if (found == plans_.end()) found = plans_.emplace(key_, Plan{}).first;
   return found->second;
 }
 
@@ -129,15 +122,12 @@ bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::str
   dates.clear();
   ++generation_;
   for (const Item& item : runtime.items()) {
-    Planned& planned = plan_of(runtime, item);
-    const bool kept = planned.seen + 1 == generation_ && same(planned.offered, item.offered);
-    if (!kept) {
-      if (!draw_date(runtime, stochastic_port(runtime, item), item.offered, planned.date, error)) {
-        return false;
-      }
-      planned.offered = item.offered;
+    Plan& planned = plan_of(runtime, item);
+    if (!renew(
+            runtime, planned, generation_, item.offered,
+            [&] { return stochastic_port(runtime, item); }, error)) {
+      return false;
     }
-    planned.seen = generation_;
     dates.push_back(planned.date);
   }
   // Items not enabled now lose their dates: they draw afresh when enabled again.

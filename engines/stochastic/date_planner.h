@@ -36,6 +36,13 @@ bool has_stochastic_ports(const bipc::ir::System& system);
 
 class DatePlanner {
  public:
+  /// The planned date of one item: kept while the item stays enabled with the same constraint.
+  struct Plan {
+    Constraint offered;
+    TimeValue date = 0;
+    std::uint64_t seen = 0;  // the last race that found the item enabled
+  };
+
   /// `unbounded_mean`: the mean delay (ns) of the exponential date of an item whose window has
   /// no right end.
   DatePlanner(const bipc::ir::System& system, const CustomDistributions& custom,
@@ -53,10 +60,28 @@ class DatePlanner {
   /// Forgets every planned date: the next plan() draws them all (a new run).
   void forget() { ++generation_; }
 
+  /// Brings `plan` to race `race` (races counted from 2; a plan seen in none is new) for an
+  /// item enabled with constraint `offered`: its date is kept when the item was enabled in the
+  /// race before with the same constraint, drawn afresh by draw_date otherwise, with the
+  /// @stochastic port `stochastic_port()` returns (called only then). plan() keeps its plans so;
+  /// a caller that keeps its own (the compiled step path) does too. False with `error` set as
+  /// plan().
+  template <class StochasticPort>
+  bool renew(Runtime& runtime, Plan& plan, std::uint64_t race, const Constraint& offered,
+             StochasticPort stochastic_port, std::string& error) {
+    const bool kept = plan.seen + 1 == race && plan.offered.urgency == offered.urgency &&
+                      plan.offered.interval == offered.interval;
+    if (!kept) {
+      if (!draw_date(runtime, stochastic_port(), offered, plan.date, error)) return false;
+      plan.offered = offered;
+    }
+    plan.seen = race;
+    return true;
+  }
+
   /// A new date for an item offered `offered`, as plan() draws one: from the @stochastic
   /// annotation of the atom port `stochastic` when the item fires one, from its urgency and
-  /// window otherwise. For a caller that keeps its own plans (the compiled step path). False
-  /// with `error` set as plan().
+  /// window otherwise. False with `error` set as plan().
   bool draw_date(Runtime& runtime, const std::optional<std::pair<Index, Index>>& stochastic,
                  const Constraint& offered, TimeValue& date, std::string& error);
   /// A date for an item without a @stochastic port: its window's first date when eager, else
@@ -67,11 +92,6 @@ class DatePlanner {
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.
   using Key = std::vector<std::pair<Index, Index>>;
-  struct Planned {
-    Constraint offered;
-    TimeValue date = 0;
-    std::uint64_t seen = 0;  // the last plan() call that found the item enabled
-  };
   // Transparent: items are looked up by a span over a reused buffer, without allocating.
   struct KeyHash {
     using is_transparent = void;
@@ -84,7 +104,7 @@ class DatePlanner {
       return std::equal(a.begin(), a.end(), b.begin(), b.end());
     }
   };
-  using Plans = std::unordered_map<Key, Planned, KeyHash, KeyEqual>;
+  using Plans = std::unordered_map<Key, Plan, KeyHash, KeyEqual>;
 
   /// Identifies an interaction item across steps: its connector and defined interaction and the
   /// atom ports it fires; written to key_.
@@ -92,7 +112,7 @@ class DatePlanner {
   /// Sizes the tables of plans kept without a key (port_plans_, connector_plans_).
   void index_connectors(const Runtime& runtime);
   /// The plan of the item (created empty when new).
-  Planned& plan_of(const Runtime& runtime, const Item& item);
+  Plan& plan_of(const Runtime& runtime, const Item& item);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
@@ -109,8 +129,8 @@ class DatePlanner {
   // bind one atom port (with few defined interactions), has a slot of its own: its key is
   // implied. Other interactions are found by key.
   static constexpr std::size_t kDirectPlans = 64;
-  std::vector<Planned> port_plans_;                    // per flattened atom port
-  std::vector<std::vector<Planned>> connector_plans_;  // per connector, per defined interaction
+  std::vector<Plan> port_plans_;                    // per flattened atom port
+  std::vector<std::vector<Plan>> connector_plans_;  // per connector, per defined interaction
   // Likewise, the @stochastic atom port of each such interaction.
   std::vector<std::vector<std::optional<std::pair<Index, Index>>>> connector_stochastic_;
   Plans plans_;
