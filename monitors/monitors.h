@@ -1,7 +1,8 @@
-// The monitors library: the property language (parsing, normalised text) and, in later stages,
-// the online monitors that judge runs against it.
+// The monitors library: the property language (parsing, normalised text) and
+// the online monitor that judges runs against it.
 #pragma once
 
+#include "monitors/online/online_monitor.h"
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"
 #include "monitors/resolve/resolve_names.h"

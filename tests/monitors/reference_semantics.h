@@ -3,8 +3,8 @@
 //
 // Continuous reading: state s_i holds on [t_i, t_{i+1}); a step followed by another at the same
 // timestamp holds at that instant only; a deadlocked run keeps its last state forever; a run cut
-// short (limit, time-lock, error) is unknown past its last step, and the verdict is then
-// three-valued by Kleene's rules (true or false only when the prefix decides it).
+// short (limit, time-lock, error) is unknown past its last step (more steps may come at that
+// step's time), and the verdict is then three-valued by Kleene's rules.
 //
 // Why a grid suffices: when timestamps and bounds are whole multiples of a granule g, the set of
 // times at which any subformula holds within one state is a union of intervals with endpoints
@@ -51,8 +51,10 @@ struct ReferenceTrace {
 
 class ReferenceEvaluator {
  public:
-  /// `horizon`: how far (in time units) past the last step a deadlocked run is examined; it
-  /// must exceed the formula's nested bounds so that the constant tail is decided.
+  /// `horizon`: how far (in time units) past the last step unbounded operators look on a
+  /// deadlocked run; it must exceed the sum of the formula's bounds, so that every value the
+  /// constant tail gives is seen. Bounded operators see twice as far, so that those nested in
+  /// unbounded ones never run out of tail.
   ReferenceEvaluator(const ReferenceTrace& trace, std::int64_t horizon)
       : trace_(trace), horizon2_(kPerUnit * horizon) {}
 
@@ -73,8 +75,10 @@ class ReferenceEvaluator {
   std::int64_t first2(std::size_t i) const { return kPerUnit * trace_.steps[i].time; }
   std::int64_t end2(std::size_t i) const {
     if (i < last()) return std::max(first2(i + 1), first2(i) + 1);
-    return trace_.deadlocked ? first2(i) + 2 + horizon2_ : first2(i) + 1;
+    return trace_.deadlocked ? unbounded_end2() + horizon2_ : first2(i) + 1;
   }
+  // Where unbounded operators stop looking on a deadlocked run.
+  std::int64_t unbounded_end2() const { return first2(last()) + 2 + horizon2_; }
   // Whether step i is followed by another at the same time: it then holds at that instant only.
   bool instant(std::size_t i) const {
     return i < last() && trace_.steps[i + 1].time == trace_.steps[i].time;
@@ -154,6 +158,10 @@ class ReferenceEvaluator {
     return p.t2 - from.t2 >= low2;
   }
   bool past(const monitors::Bound& b, Point from, Point p, std::int64_t high2) const {
+    if (b.kind == monitors::Bound::Kind::Time) return p.t2 - from.t2 > high2;
+    // Unbounded and step bounds: a deadlocked run's tail is one step, seen up to the horizon,
+    // beyond which its points are all alike (one of them is seen).
+    if (trace_.deadlocked && p.t2 >= std::max(unbounded_end2(), from.t2 + 1)) return true;
     if (b.kind == monitors::Bound::Kind::Steps) {
       return p.step - from.step > static_cast<std::size_t>(b.high.number);
     }
@@ -206,23 +214,27 @@ class ReferenceEvaluator {
     const bool ran_out = walk(at, [&](Point p) {
       if (past(bound, at, p, high2)) return false;
       seen = p;
+      Tri h = Tri::True;
+      if (hold != nullptr) {
+        h = eval(*hold, p);
+        if (negate_hold) h = tri_not(h);
+      }
       if (within(bound, at, p, low2)) {
         Tri g = eval(goal, p);
         if (negate_goal) g = tri_not(g);
-        result = tri_or(result, tri_and(held, g));
+        // A witness inside an open interval (odd grid point) after `at` lies past part of
+        // that interval, where the hold must hold too.
+        const bool inside = p.t2 % 2 == 1 && (p.step != at.step || p.t2 != at.t2);
+        result = tri_or(result, tri_and(inside ? tri_and(held, h) : held, g));
       }
-      if (hold != nullptr) {
-        Tri h = eval(*hold, p);
-        if (negate_hold) h = tri_not(h);
-        held = tri_and(held, h);
-      }
+      held = tri_and(held, h);
       return result != Tri::True && held != Tri::False;
     });
-    // A cut run leaves the verdict open only if the bound reaches past its last known point.
-    const bool covered =
-        bound.kind == monitors::Bound::Kind::Steps
-            ? seen.step - at.step >= static_cast<std::size_t>(bound.high.number)
-            : bound.kind == monitors::Bound::Kind::Time && seen.t2 - at.t2 >= high2;
+    // A cut run leaves the verdict open only if the bound reaches its unknown part: the steps
+    // after its last, which may come at the last one's time.
+    const bool covered = bound.kind == monitors::Bound::Kind::Steps
+                             ? seen.step - at.step >= static_cast<std::size_t>(bound.high.number)
+                             : bound.kind == monitors::Bound::Kind::Time && seen.t2 - at.t2 > high2;
     if (ran_out && !covered && result != Tri::True && held != Tri::False) {
       result = tri_or(result, Tri::Unknown);
     }

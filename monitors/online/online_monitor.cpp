@@ -1,0 +1,393 @@
+#include "monitors/online/online_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+namespace smcbip::monitors {
+
+using online::kForever;
+using online::kLastRank;
+using online::Pos;
+using online::Tick;
+
+namespace {
+
+std::vector<std::unique_ptr<online::Node>> clone_all(
+    const std::vector<std::unique_ptr<online::Node>>& nodes) {
+  std::vector<std::unique_ptr<online::Node>> copy;
+  copy.reserve(nodes.size());
+  for (const auto& node : nodes) copy.push_back(node->clone());
+  return copy;
+}
+
+double seconds_per(TimeUnit unit) {
+  switch (unit) {
+    case TimeUnit::Seconds:
+      return 1.0;
+    case TimeUnit::Milliseconds:
+      return 1e-3;
+    case TimeUnit::Microseconds:
+      return 1e-6;
+    case TimeUnit::Nanoseconds:
+      return 1e-9;
+    case TimeUnit::None:
+      break;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+/// Builds the monitor's nodes from a formula: negations pushed to the leaves, equal
+/// subformulas shared (by their signature), and the unit, idempotence and absorption laws of
+/// && and || applied.
+class OnlineMonitor::Builder {
+ public:
+  Builder(OnlineMonitor& monitor, const TimeScale& scale) : m_(monitor), scale_(scale) {}
+
+  std::size_t build(const Formula& f, bool negated) {
+    using K = Formula::Kind;
+    auto operand = [&](std::size_t k, bool neg) { return build(*f.operands[k], neg); };
+    switch (f.kind) {
+      case K::True:
+      case K::False:
+        return constant((f.kind == K::True) != negated);
+      case K::Atom:
+        return literal(*f.atom, negated);
+      case K::Not:
+        return operand(0, !negated);
+      case K::And:
+        return junction(negated, operand(0, negated), operand(1, negated));
+      case K::Or:
+        return junction(!negated, operand(0, negated), operand(1, negated));
+      case K::Implies:
+        return junction(!negated, operand(0, !negated), operand(1, negated));
+      case K::Next:
+        return next(operand(0, negated));
+      case K::Finally:  // !F phi = G !phi
+        return finally(window(f.bound), operand(0, negated), negated);
+      case K::Globally:
+        return finally(window(f.bound), operand(0, negated), !negated);
+      case K::Until:  // !(a U b) = !a R !b
+        return until(window(f.bound), operand(0, negated), operand(1, negated), negated);
+      case K::Release:
+        return until(window(f.bound), operand(0, negated), operand(1, negated), !negated);
+    }
+    return constant(false);
+  }
+
+ private:
+  struct Shape {
+    char kind = 0;  // 'c' constant, 'l' literal, '&', '|', 't' temporal
+    std::size_t x = 0, y = 0;
+    bool value = false;  // a constant's
+  };
+
+  std::size_t constant(bool value) {
+    const std::size_t id = add(value ? "true" : "false", {'c', 0, 0, value},
+                               [] { return std::make_unique<online::Leaf>(); });
+    if (fresh_) m_.leaves_.push_back({id, nullptr, value});
+    return id;
+  }
+
+  std::size_t literal(const Expr& predicate, bool negated) {
+    const std::size_t id = add((negated ? "!" : "") + to_string(predicate), {'l'},
+                               [] { return std::make_unique<online::Leaf>(); });
+    if (fresh_) m_.leaves_.push_back({id, &predicate, negated});
+    return id;
+  }
+
+  std::size_t junction(bool disjunction, std::size_t x, std::size_t y) {
+    const char kind = disjunction ? '|' : '&';
+    for (auto [a, b] : {std::pair{x, y}, std::pair{y, x}}) {
+      if (shapes_[a].kind == 'c') return shapes_[a].value == disjunction ? a : b;
+      // a && (a || c) = a, a || (a && c) = a
+      const Shape& other = shapes_[b];
+      if (other.kind == (disjunction ? '&' : '|') && (other.x == a || other.y == a)) return a;
+    }
+    if (x == y) return x;
+    if (y < x) std::swap(x, y);
+    return add(kind + std::to_string(x) + "," + std::to_string(y), {kind, x, y}, [&] {
+      return std::make_unique<online::Junction>(self(), operand(x), operand(y), disjunction);
+    });
+  }
+
+  std::size_t next(std::size_t phi) {
+    return add("X" + std::to_string(phi), {'t'},
+               [&] { return std::make_unique<online::Next>(self(), operand(phi)); });
+  }
+
+  std::size_t finally(online::Window w, std::size_t phi, bool dual) {
+    return add(signature(dual ? "G" : "F", w) + std::to_string(phi), {'t'},
+               [&] { return std::make_unique<online::Finally>(self(), operand(phi), w, dual); });
+  }
+
+  std::size_t until(online::Window w, std::size_t hold, std::size_t goal, bool dual) {
+    return add(signature(dual ? "R" : "U", w) + std::to_string(hold) + "," + std::to_string(goal),
+               {'t'}, [&] {
+                 return std::make_unique<online::Until>(self(), operand(hold), operand(goal), w,
+                                                        dual);
+               });
+  }
+
+  static std::string signature(const char* op, const online::Window& w) {
+    return std::string(op) + (w.axis == online::Axis::Steps ? "#" : "") + "[" +
+           std::to_string(w.low) + "," + std::to_string(w.high) + "]";
+  }
+
+  /// The node of `signature`, made by `make` unless an equal one exists.
+  template <class Make>
+  std::size_t add(const std::string& signature, Shape shape, Make make) {
+    const auto [it, inserted] = ids_.try_emplace(signature, m_.blank_nodes_.size());
+    fresh_ = inserted;
+    if (!inserted) return it->second;
+    m_.blank_signals_.of.emplace_back();
+    m_.blank_nodes_.push_back(make());
+    shapes_.push_back(shape);
+    return it->second;
+  }
+  std::size_t self() const { return m_.blank_nodes_.size(); }
+  online::Operand operand(std::size_t node) {
+    return {node, m_.blank_signals_.of[node].add_reader()};
+  }
+
+  online::Window window(const Bound& b) const {
+    switch (b.kind) {
+      case Bound::Kind::None:
+        return {};
+      case Bound::Kind::Steps:
+        return {online::Axis::Steps, 0, whole(b.high, 1.0)};
+      case Bound::Kind::Time:  // in half ticks
+        return {online::Axis::Time, 2 * ticks(b.low), 2 * ticks(b.high)};
+    }
+    return {};
+  }
+
+  Tick ticks(const Value& v) const {
+    const double per = v.unit == TimeUnit::None ? scale_.ticks_per_unit
+                                                : scale_.ticks_per_second * seconds_per(v.unit);
+    return whole(v, per);
+  }
+
+  /// `v` (a number or a bound name) times `scale`, which must come to a whole number.
+  Tick whole(const Value& v, double scale) const {
+    double number = v.number;
+    if (v.is_name()) {
+      const auto it = m_.bindings_.find(v.name);
+      if (it == m_.bindings_.end()) throw MonitorError(v.at, "no value given for '" + v.name + "'");
+      number = it->second;
+    }
+    const double x = number * scale;
+    if (!(x >= 0)) throw MonitorError(v.at, "a bound must not be negative");
+    if (x >= static_cast<double>(online::kNever / 2)) return online::kNever / 2;
+    const double rounded = std::round(x);
+    if (std::abs(x - rounded) > 1e-6 * std::max(1.0, x)) {
+      throw MonitorError(v.at, "the bound " + (v.is_name() ? v.name : v.text) +
+                                   " is finer than the run's time resolution");
+    }
+    return static_cast<Tick>(rounded);
+  }
+
+  OnlineMonitor& m_;
+  TimeScale scale_;
+  std::map<std::string, std::size_t> ids_;
+  std::vector<Shape> shapes_;
+  bool fresh_ = false;  // the last add made a node
+};
+
+OnlineMonitor::OnlineMonitor(const Formula& formula, const TimeScale& scale,
+                             const Bindings& bindings)
+    : bindings_(bindings) {
+  Builder builder(*this, scale);
+  root_ = builder.build(formula, false);
+  root_reader_ = blank_signals_.of[root_].add_reader();
+  reset();
+}
+
+OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
+    : blank_nodes_(clone_all(other.blank_nodes_)),
+      blank_signals_(other.blank_signals_),
+      leaves_(other.leaves_),
+      root_(other.root_),
+      root_reader_(other.root_reader_),
+      bindings_(other.bindings_),
+      nodes_(clone_all(other.nodes_)),
+      signals_(other.signals_),
+      pending_(other.pending_),
+      started_(other.started_),
+      origin_(other.origin_),
+      last_(other.last_),
+      verdict_(other.verdict_),
+      decided_(other.decided_) {}
+
+OnlineMonitor& OnlineMonitor::operator=(const OnlineMonitor& other) {
+  if (this != &other) *this = OnlineMonitor(other);
+  return *this;
+}
+
+OnlineMonitor::~OnlineMonitor() = default;
+
+void OnlineMonitor::reset() {
+  nodes_ = clone_all(blank_nodes_);
+  signals_ = blank_signals_;
+  pending_.assign(leaves_.size(), false);
+  started_ = false;
+  origin_ = 0;
+  last_ = {};
+  verdict_ = Verdict::Undecided;
+  decided_ = false;
+}
+
+Verdict OnlineMonitor::step(const StateView& state, Tick time) {
+  if (decided_) return verdict_;
+  Pos at = online::kFirst;
+  if (!started_) {
+    started_ = true;
+    origin_ = time;
+  } else {
+    const Tick t = 2 * (time - origin_);  // half ticks
+    if (t < last_.t) throw std::invalid_argument("online monitor: a step earlier than the last");
+    // The last step held up to this one: an instant when they share the time.
+    emit_leaves(t == last_.t ? last_ : Pos{t - 1, kLastRank});
+    at = t == last_.t ? Pos{t, last_.n + 1} : Pos{t, 0};
+  }
+  last_ = at;
+  signals_.segments.push(at);
+  for (std::size_t i = 0; i < leaves_.size(); ++i) pending_[i] = holds(leaves_[i], state);
+  advance();
+  if (const online::Run* run = root_run()) decide(run->value ? Verdict::True : Verdict::False);
+  return verdict_;
+}
+
+Verdict OnlineMonitor::end(RunEnd how) {
+  if (decided_ || !started_) return verdict_;
+  if (how == RunEnd::Deadlock) {
+    emit_leaves(kForever);
+    signals_.segments.finish();
+    advance();
+  } else {
+    emit_leaves(last_);
+    advance();
+  }
+  if (const online::Run* run = root_run()) {
+    decide(run->value ? Verdict::True : Verdict::False);
+  } else {
+    // Kleene's value: true if true whatever follows reads, false if false whatever it reads.
+    const Verdict sure = finish_cut(false);
+    const Verdict maybe = finish_cut(true);
+    decide(sure == Verdict::True     ? Verdict::True
+           : maybe == Verdict::False ? Verdict::False
+                                     : Verdict::Undecided);
+  }
+  return verdict_;
+}
+
+Verdict OnlineMonitor::finish_cut(bool unknown) {
+  auto nodes = clone_all(nodes_);
+  online::Signals signals = signals_;
+  for (const Leaf& leaf : leaves_) signals_.of[leaf.node].emit(kForever, unknown);
+  signals_.segments.push(online::after(last_));
+  signals_.segments.finish();
+  advance();
+  const online::Run* run = root_run();
+  const Verdict verdict = run == nullptr ? Verdict::Undecided
+                          : run->value   ? Verdict::True
+                                         : Verdict::False;
+  nodes_ = std::move(nodes);
+  signals_ = std::move(signals);
+  return verdict;
+}
+
+void OnlineMonitor::decide(Verdict verdict) {
+  verdict_ = verdict;
+  decided_ = true;
+}
+
+void OnlineMonitor::emit_leaves(Pos end) {
+  for (std::size_t i = 0; i < leaves_.size(); ++i) {
+    signals_.of[leaves_[i].node].emit(end, pending_[i]);
+  }
+}
+
+void OnlineMonitor::advance() {
+  for (const auto& node : nodes_) node->advance(signals_);
+  for (online::Signal& signal : signals_.of) signal.trim();
+  std::int64_t needed = signals_.segments.count() - 1;
+  for (const auto& node : nodes_) {
+    const std::int64_t n = node->segment_needed(signals_);
+    if (n >= 0) needed = std::min(needed, n);
+  }
+  signals_.segments.drop_before(needed);
+}
+
+const online::Run* OnlineMonitor::root_run() { return signals_.of[root_].peek(root_reader_); }
+
+std::size_t OnlineMonitor::held_runs() const {
+  std::size_t runs = 0;
+  for (const online::Signal& signal : signals_.of) runs += signal.size();
+  return runs;
+}
+
+bool OnlineMonitor::holds(const Leaf& leaf, const StateView& state) const {
+  if (leaf.predicate == nullptr) return leaf.negated;  // a constant: its value
+  return (evaluate(*leaf.predicate, state) != 0) != leaf.negated;
+}
+
+double OnlineMonitor::evaluate(const Expr& e, const StateView& state) const {
+  using K = Expr::Kind;
+  auto operand = [&](std::size_t k) { return evaluate(*e.operands[k], state); };
+  switch (e.kind) {
+    case K::Number:
+      return e.value.number;
+    case K::Bool:
+      return e.boolean ? 1 : 0;
+    case K::Name: {
+      if (e.reference.kind == Reference::Kind::Constant ||
+          e.reference.kind == Reference::Kind::Unresolved) {
+        const auto it = bindings_.find(e.path);
+        if (it != bindings_.end()) return it->second;
+      }
+      return state.value(e);
+    }
+    case K::Fired:
+      return state.fired(e) ? 1 : 0;
+    case K::Negate:
+      return -operand(0);
+    case K::Add:
+      return operand(0) + operand(1);
+    case K::Subtract:
+      return operand(0) - operand(1);
+    case K::Multiply:
+      return operand(0) * operand(1);
+    case K::Divide:
+      return operand(0) / operand(1);
+    case K::Modulo: {
+      const auto divisor = static_cast<std::int64_t>(operand(1));
+      if (divisor == 0) return std::numeric_limits<double>::quiet_NaN();
+      if (divisor == -1) return 0;  // INT64_MIN % -1 overflows
+      return static_cast<double>(static_cast<std::int64_t>(operand(0)) % divisor);
+    }
+    case K::Less:
+      return operand(0) < operand(1) ? 1 : 0;
+    case K::LessEqual:
+      return operand(0) <= operand(1) ? 1 : 0;
+    case K::Greater:
+      return operand(0) > operand(1) ? 1 : 0;
+    case K::GreaterEqual:
+      return operand(0) >= operand(1) ? 1 : 0;
+    case K::Equal:
+      return operand(0) == operand(1) ? 1 : 0;
+    case K::NotEqual:
+      return operand(0) != operand(1) ? 1 : 0;
+    case K::Call:
+      if (e.path == "abs") return std::abs(operand(0));
+      if (e.path == "min") return std::min(operand(0), operand(1));
+      return std::max(operand(0), operand(1));
+  }
+  return 0;
+}
+
+}  // namespace smcbip::monitors

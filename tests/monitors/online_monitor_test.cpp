@@ -1,0 +1,318 @@
+// The semantics of PROPERTIES.md on hand-worked traces, where the reference evaluator and the
+// online monitor must both give the verdict worked out; then the monitor against the
+// reference on random formulas over random timed traces (fixed seeds), and its memory on long
+// runs.
+#include "monitors/online/online_monitor.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "monitors/monitors.h"
+#include "reference_semantics.h"
+
+namespace smcbip::tests {
+namespace {
+
+using monitors::OnlineMonitor;
+using monitors::RunEnd;
+using monitors::Verdict;
+
+/// A reference step read as a state.
+class StepView final : public monitors::StateView {
+ public:
+  explicit StepView(const ReferenceStep& step) : step_(step) {}
+  double value(const monitors::Expr& name) const override { return step_.values.at(name.path); }
+  bool fired(const monitors::Expr& fired) const override { return step_.fired == fired.path; }
+
+ private:
+  const ReferenceStep& step_;
+};
+
+monitors::ParsedProperties parse(const std::string& formula) {
+  monitors::ParsedProperties parsed =
+      monitors::parse_properties("P=? [ " + formula + " ]", "f.mtl");
+  EXPECT_TRUE(parsed.ok()) << formula << "\n" << parsed.diagnostics.format(parsed.sources);
+  return parsed;
+}
+
+Tri tri_of(Verdict v) {
+  return v == Verdict::True ? Tri::True : v == Verdict::False ? Tri::False : Tri::Unknown;
+}
+
+// Timestamps and bounds of the reference traces are whole and half units: the monitor counts
+// half units.
+constexpr monitors::TimeScale kHalves{2.0, 2.0};
+
+/// The monitor's verdict on `trace`; a verdict given before the end must be the final one.
+Tri monitor_verdict(const monitors::Formula& formula, const ReferenceTrace& trace) {
+  OnlineMonitor monitor(formula, kHalves, {});
+  Verdict early = Verdict::Undecided;
+  for (const ReferenceStep& step : trace.steps) {
+    const Verdict v = monitor.step(StepView(step), 2 * step.time);
+    if (early == Verdict::Undecided) early = v;
+  }
+  const Verdict final = monitor.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
+  if (early != Verdict::Undecided) {
+    EXPECT_EQ(early, final) << "an early verdict changed";
+  }
+  return tri_of(final);
+}
+
+Tri reference_verdict(const monitors::Formula& formula, const ReferenceTrace& trace) {
+  return ReferenceEvaluator(trace, 60).verdict(formula);
+}
+
+ReferenceStep step(std::int64_t time, double p, double q = 0, std::string fired = "") {
+  return {time, {{"p", p}, {"q", q}}, std::move(fired)};
+}
+
+/// The verdict the reference evaluator and the monitor give, which must be the same.
+Tri verdict(const ReferenceTrace& trace, const std::string& text) {
+  const monitors::ParsedProperties parsed = parse(text);
+  const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+  const Tri expected = reference_verdict(formula, trace);
+  const Tri got = monitor_verdict(formula, trace);
+  EXPECT_EQ(got, expected) << text;
+  return expected;
+}
+
+// Hand-worked verdicts: closed and punctual bounds, equal timestamps, non-strict until, cut
+// runs, nested bounds over continuous time, next and step bounds.
+
+// p false on [0, 5), true from 5 on (deadlocked).
+const ReferenceTrace kLateP{{step(0, 0), step(5, 1)}, true};
+
+TEST(Semantics, TimeBoundsAreClosed) {
+  EXPECT_EQ(verdict(kLateP, "F[0,4] p"), Tri::False);
+  EXPECT_EQ(verdict(kLateP, "F[0,5] p"), Tri::True);
+  EXPECT_EQ(verdict(kLateP, "F[5,5] p"), Tri::True);
+  EXPECT_EQ(verdict(kLateP, "F[4.5,4.5] p"), Tri::False);
+  EXPECT_EQ(verdict(kLateP, "G[0,4] !p"), Tri::True);
+  EXPECT_EQ(verdict(kLateP, "G[0,5] !p"), Tri::False);
+  EXPECT_EQ(verdict(kLateP, "G[5,100] p"), Tri::True);
+  EXPECT_EQ(verdict(kLateP, "F p"), Tri::True);
+}
+
+TEST(Semantics, StepsAtOneTimestampHoldForAnInstant) {
+  // p holds only at the instant 3, between two steps that share it.
+  const ReferenceTrace trace{{step(0, 0), step(3, 1), step(3, 0)}, true};
+  EXPECT_EQ(verdict(trace, "F[3,3] p"), Tri::True);
+  EXPECT_EQ(verdict(trace, "G[3,3] !p"), Tri::False);
+  EXPECT_EQ(verdict(trace, "F[0,10] (p && F[1,1] p)"), Tri::False);
+  EXPECT_EQ(verdict(trace, "G[4,10] !p"), Tri::True);
+  EXPECT_EQ(verdict(trace, "F[0,10] (p && X !p)"), Tri::True);
+}
+
+TEST(Semantics, UntilIsNonStrict) {
+  const ReferenceTrace trace{{step(0, 0, 1), step(2, 0, 0)}, true};
+  EXPECT_EQ(verdict(trace, "p U[0,5] q"), Tri::True);
+  EXPECT_EQ(verdict(trace, "p U[1,5] q"), Tri::False);
+  // p until q: p must hold on [0, 4) and q at 4.
+  const ReferenceTrace later{{step(0, 1, 0), step(4, 0, 1)}, true};
+  EXPECT_EQ(verdict(later, "p U[0,5] q"), Tri::True);
+  EXPECT_EQ(verdict(later, "p U[0,3] q"), Tri::False);
+  EXPECT_EQ(verdict(later, "q R[0,3] p"), Tri::True);
+}
+
+TEST(Semantics, AWitnessInsideAnOpenIntervalNeedsTheHoldThere) {
+  // p on [0, 3): `p U[1,1] true` holds on [0, 2], closed, and fails on (2, +inf). A witness of
+  // its failure lies in (2, 2.5) at the earliest, and the hold must cover part of that.
+  const ReferenceTrace trace{{step(0, 1), step(3, 0)}, true};
+  EXPECT_EQ(verdict(trace, "G[0,2] (p U[1,1] true)"), Tri::True);
+  EXPECT_EQ(verdict(trace, "F[2.5,2.5] (p U[1,1] true)"), Tri::False);
+  EXPECT_EQ(verdict(trace, "(p U[1,1] true) U[0,5] !(p U[1,1] true)"), Tri::False);
+  EXPECT_EQ(verdict(trace, "(p U[1,1] true) U[0,5] !p"), Tri::False);
+  EXPECT_EQ(verdict(trace, "p U[0,5] !(p U[1,1] true)"), Tri::True);
+}
+
+TEST(Semantics, ARunCutShortLeavesTheFutureUndecided) {
+  const ReferenceTrace cut{{step(0, 0), step(2, 0)}, false};
+  EXPECT_EQ(verdict(cut, "F[0,1.5] p"), Tri::False);
+  // Another step may come at time 2, the last step's.
+  EXPECT_EQ(verdict(cut, "F[0,2] p"), Tri::Unknown);
+  EXPECT_EQ(verdict(cut, "F[0,10] p"), Tri::Unknown);
+  EXPECT_EQ(verdict(cut, "G[0,10] p"), Tri::False);  // decided by the prefix
+  EXPECT_EQ(verdict(cut, "G[0,10] !p"), Tri::Unknown);
+  EXPECT_EQ(verdict(cut, "F[5,10] true"), Tri::Unknown);  // the run may never get there
+  EXPECT_EQ(verdict(cut, "F[0,5] p || !p"), Tri::True);
+  EXPECT_EQ(verdict(cut, "X X p"), Tri::Unknown);
+}
+
+TEST(Semantics, NestedBoundsReadContinuousTime) {
+  // p from 1 on: at every time of [0, 2], p comes within 1.
+  const ReferenceTrace trace{{step(0, 0), step(1, 1)}, true};
+  EXPECT_EQ(verdict(trace, "G[0,2] F[0,1] p"), Tri::True);
+  EXPECT_EQ(verdict(trace, "G[0,2] F[0,0.5] p"), Tri::False);
+  // p only on [1, 2): F[0,1] p fails from time 2 on, and at 1.5 G[0,1] p fails already.
+  const ReferenceTrace pulse{{step(0, 0), step(1, 1), step(2, 0)}, true};
+  EXPECT_EQ(verdict(pulse, "F[0,5] G[0,1] p"), Tri::False);
+  EXPECT_EQ(verdict(pulse, "F[0,5] G[0,0] p"), Tri::True);
+  EXPECT_EQ(verdict(pulse, "F[0,1] G[0,0.5] p"), Tri::True);
+}
+
+TEST(Semantics, NextAndStepBoundsCountSteps) {
+  const ReferenceTrace trace{{step(0, 0), step(7, 0), step(9, 1)}, true};
+  EXPECT_EQ(verdict(trace, "X p"), Tri::False);
+  EXPECT_EQ(verdict(trace, "X X p"), Tri::True);
+  EXPECT_EQ(verdict(trace, "F{1} p"), Tri::False);
+  EXPECT_EQ(verdict(trace, "F{2} p"), Tri::True);
+  EXPECT_EQ(verdict(trace, "F[0,8] fired(go) || F{2} p"), Tri::True);
+  const ReferenceTrace instants{{step(0, 0), step(1, 0), step(1, 0), step(9, 1)}, true};
+  EXPECT_EQ(verdict(instants, "F{2} p"), Tri::False);
+  EXPECT_EQ(verdict(instants, "F{3} p"), Tri::True);
+  EXPECT_EQ(verdict(instants, "G{2} !p"), Tri::True);
+  EXPECT_EQ(verdict(instants, "!p U{3} p"), Tri::True);
+  EXPECT_EQ(verdict(instants, "X X X p"), Tri::True);
+}
+
+TEST(OnlineMonitor, DecidesAsSoonAsTheStepsDo) {
+  const monitors::ParsedProperties parsed = parse("F[0,100] p");
+  OnlineMonitor monitor(*parsed.file.queries.at(0).formula, kHalves, {});
+  const ReferenceStep off = step(0, 0), on = step(3, 1);
+  EXPECT_EQ(monitor.step(StepView(off), 0), Verdict::Undecided);
+  EXPECT_EQ(monitor.step(StepView(on), 6), Verdict::Undecided);  // p holds from 3 on...
+  const ReferenceStep next = step(4, 0);
+  EXPECT_EQ(monitor.step(StepView(next), 8), Verdict::True);  // ...as the next step shows
+}
+
+TEST(OnlineMonitor, BoundsMustBeWholeTicks) {
+  const monitors::ParsedProperties parsed = parse("F[0,0.25] p");
+  EXPECT_THROW(OnlineMonitor(*parsed.file.queries.at(0).formula, kHalves, {}),
+               monitors::MonitorError);
+}
+
+// Random formulas over p and q, nested up to `depth`, with bounds in half units from 0 to 3
+// (punctual ones and a = 0 included), steps bounds, unbounded operators and next.
+class FormulaMaker {
+ public:
+  explicit FormulaMaker(std::uint32_t seed) : random_(seed) {}
+
+  std::string make(int depth) {
+    if (depth == 0 || pick(5) == 0) return leaf();
+    const auto sub = [&] { return "(" + make(depth - 1) + ")"; };
+    switch (pick(13)) {
+      case 0:
+        return "!" + sub();
+      case 1:
+        return sub() + " && " + sub();
+      case 2:
+        return sub() + " || " + sub();
+      case 3:
+        return sub() + " -> " + sub();
+      case 4:
+        return "X " + sub();
+      case 5:
+        return "F" + interval() + " " + sub();
+      case 6:
+        return "G" + interval() + " " + sub();
+      case 7:
+        return sub() + " U" + interval() + " " + sub();
+      case 8:
+        return sub() + " R" + interval() + " " + sub();
+      case 9:
+        return "F" + steps() + " " + sub();
+      case 10:
+        return sub() + " U" + steps() + " " + sub();
+      case 11:
+        return (pick(2) == 0 ? "F " : "G ") + sub();
+      default:
+        return sub() + (pick(2) == 0 ? " U " : " R ") + sub();
+    }
+  }
+
+ private:
+  std::string leaf() {
+    // The last two hold on sets closed on the right ([0, 2] for p on [0, 3)): their
+    // complements start with an open interval.
+    static const char* const kLeaves[] = {
+        "p", "q", "!p", "p == q", "true", "false", "(p U[0.5,0.5] true)", "(q U[1,1] p)"};
+    return kLeaves[pick(8)];
+  }
+  std::string half(int halves) {
+    return std::to_string(halves / 2) + (halves % 2 == 0 ? "" : ".5");
+  }
+  std::string interval() {
+    const int low = pick(3) == 0 ? 0 : pick(7);
+    const int high = low + (pick(3) == 0 ? 0 : pick(7));
+    return "[" + half(low) + "," + half(high) + "]";
+  }
+  std::string steps() { return "{" + std::to_string(pick(4)) + "}"; }
+  int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(random_); }
+
+  std::mt19937 random_;
+};
+
+ReferenceTrace random_trace(std::mt19937& random) {
+  auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(random); };
+  ReferenceTrace trace;
+  trace.deadlocked = pick(2) == 0;
+  std::int64_t time = 0;
+  const int steps = 1 + pick(8);
+  for (int i = 0; i < steps; ++i) {
+    if (i > 0) time += pick(4) == 0 ? 0 : 1 + pick(3);
+    trace.steps.push_back(step(time, pick(2), pick(2)));
+  }
+  return trace;
+}
+
+TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
+  // 30,000 pairs, seeds fixed: a disagreement names the formula and the trace.
+  FormulaMaker maker(20261122);
+  std::mt19937 traces(7);
+  int decided = 0;
+  for (int i = 0; i < 30000; ++i) {
+    const std::string text = maker.make(1 + i % 4);
+    const monitors::ParsedProperties parsed = parse(text);
+    const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+    const ReferenceTrace trace = random_trace(traces);
+    const Tri expected = reference_verdict(formula, trace);
+    const Tri got = monitor_verdict(formula, trace);
+    std::string steps;
+    for (const ReferenceStep& s : trace.steps) {
+      steps += " (" + std::to_string(s.time) + ": p=" + std::to_string(int(s.values.at("p"))) +
+               " q=" + std::to_string(int(s.values.at("q"))) + ")";
+    }
+    ASSERT_EQ(got, expected) << "case " << i << ": " << text << " on" << steps
+                             << (trace.deadlocked ? " deadlocked" : " cut");
+    decided += got != Tri::Unknown;
+  }
+  EXPECT_GT(decided, 15000);  // the cases are not mostly undecided
+}
+
+/// A state where p and q take given values.
+class PairView final : public monitors::StateView {
+ public:
+  double value(const monitors::Expr& name) const override { return name.path == "p" ? p : q; }
+  bool fired(const monitors::Expr&) const override { return false; }
+  bool p = false, q = false;
+};
+
+TEST(OnlineMonitor, RemembersTheWindowsNotTheRun) {
+  // A million steps 1 tick apart, p at random and q every 10 ticks: the formulas hold all
+  // along, so no verdict stops the run, and what the monitor holds depends on their bounds,
+  // not on how long the run is.
+  for (const char* text :
+       {"G (p -> F[0,50] q)", "G[0,2000000] F[0,20] (p || q)", "G (p -> F[5,15] q)", "G F{10} q",
+        "G (p R[0,30] !q || F[0,9] q)", "G (p -> (!q U[0,10] q))"}) {
+    const monitors::ParsedProperties parsed = parse(text);
+    OnlineMonitor monitor(*parsed.file.queries.at(0).formula, {1.0, 1.0}, {});
+    PairView view;
+    std::mt19937 random(3);
+    std::size_t most_early = 0, most = 0;
+    for (std::int64_t t = 0; t < 1000000; ++t) {
+      view.p = random() % 4 == 0;
+      view.q = t % 10 == 0;
+      ASSERT_EQ(monitor.step(view, t), Verdict::Undecided) << text << " at " << t;
+      std::size_t& peak = t < 100000 ? most_early : most;
+      peak = std::max(peak, monitor.held_runs());
+    }
+    EXPECT_LE(most, most_early + most_early / 2 + 4) << text;  // no growth beyond chance
+    EXPECT_LE(most, 200u) << text;
+  }
+}
+
+}  // namespace
+}  // namespace smcbip::tests
