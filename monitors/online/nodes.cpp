@@ -96,10 +96,10 @@ Pos Bounded::settled_before(Pos from, const Signals& s) const {
 void Finally::advance(Signals& s) {
   Signal& phi = s.of[phi_.node];
   while (const Run* run = phi.peek(phi_.reader)) {
-    if (run->value != dual_) {
+    const Pos from = after(read_);
+    if (run->value != dual_ && from <= end_) {
       // Witnesses from `from` to the run's end: found wherever the window reaches them.
-      const Pos from = after(read_);
-      Pos to = run->end;
+      Pos to = std::min(run->end, end_);
       if (to != kForever && w_.low > 0) to = last_at(key(to, s) - w_.low);
       found(s, first_at(key(from, s) - w_.high, s), to);
     }
@@ -124,7 +124,12 @@ void Until::advance(Signals& s) {
     const bool h = rh->value != dual_, g = rg->value != dual_;
     if (rh->end == to) hold.pop(hold_.reader);
     if (rg->end == to) goal.pop(goal_.reader);
-    piece(s, after(read_), to, h, g);
+    Pos from = after(read_);
+    if (from <= end_ && to > end_) {  // no witness after the end of the observation
+      piece(s, from, end_, h, g);
+      from = after(end_);
+    }
+    piece(s, from, to, h, g && from <= end_);
     read_ = to;
   }
   if (read_ == kForever) {

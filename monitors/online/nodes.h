@@ -28,6 +28,9 @@ class Node {
   virtual void advance(Signals& s) = 0;
   /// The oldest segment it may still ask about (X and step bounds), or -1.
   virtual std::int64_t segment_needed(const Signals&) const { return -1; }
+  /// The run is observed up to `end` only: positions after it do not exist for the windows
+  /// (what is not found by then never is).
+  virtual void close(Pos /*end*/) {}
 };
 
 /// A reader of an operand's signal.
@@ -87,6 +90,7 @@ struct Window {
 class Bounded : public Node {
  public:
   std::int64_t segment_needed(const Signals& s) const override;
+  void close(Pos end) override { end_ = end; }
 
  protected:
   Bounded(std::size_t self, Window window, bool dual) : self_(self), w_(window), dual_(dual) {}
@@ -109,7 +113,8 @@ class Bounded : public Node {
 
   std::size_t self_;
   Window w_;
-  bool dual_;  // values flipped on the way in and out: G from F, R from U
+  bool dual_;           // values flipped on the way in and out: G from F, R from U
+  Pos end_ = kForever;  // the last position observed
 };
 
 /// F[a,b] phi: some position of the window holds phi; dual: G[a,b] phi.

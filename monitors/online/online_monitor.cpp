@@ -39,7 +39,36 @@ double seconds_per(TimeUnit unit) {
   return 0.0;
 }
 
+/// `v` times `scale`, which must come to a whole number at least 0.
+std::int64_t whole(const Value& v, double scale, const Bindings& bindings) {
+  double number = v.number;
+  if (v.is_name()) {
+    const auto it = bindings.find(v.name);
+    if (it == bindings.end()) throw MonitorError(v.at, "no value given for '" + v.name + "'");
+    number = it->second;
+  }
+  const double x = number * scale;
+  if (!(x >= 0)) throw MonitorError(v.at, "a bound must not be negative");
+  if (x >= static_cast<double>(online::kNever / 2)) return online::kNever / 2;
+  const double rounded = std::round(x);
+  if (std::abs(x - rounded) > 1e-6 * std::max(1.0, x)) {
+    throw MonitorError(v.at, "the bound " + (v.is_name() ? v.name : v.text) +
+                                 " is finer than the run's time resolution");
+  }
+  return static_cast<std::int64_t>(rounded);
+}
+
 }  // namespace
+
+Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings) {
+  const double per = v.unit == TimeUnit::None ? scale.ticks_per_unit
+                                              : scale.ticks_per_second * seconds_per(v.unit);
+  return whole(v, per, bindings);
+}
+
+std::int64_t bound_steps(const Value& v, const Bindings& bindings) {
+  return whole(v, 1.0, bindings);
+}
 
 /// Builds the monitor's nodes from a formula: negations pushed to the leaves, equal
 /// subformulas shared (by their signature), and the unit, idempotence and absorption laws of
@@ -159,37 +188,14 @@ class OnlineMonitor::Builder {
       case Bound::Kind::None:
         return {};
       case Bound::Kind::Steps:
-        return {online::Axis::Steps, 0, whole(b.high, 1.0)};
+        return {online::Axis::Steps, 0, bound_steps(b.high, m_.bindings_)};
       case Bound::Kind::Time:  // in half ticks
         return {online::Axis::Time, 2 * ticks(b.low), 2 * ticks(b.high)};
     }
     return {};
   }
 
-  Tick ticks(const Value& v) const {
-    const double per = v.unit == TimeUnit::None ? scale_.ticks_per_unit
-                                                : scale_.ticks_per_second * seconds_per(v.unit);
-    return whole(v, per);
-  }
-
-  /// `v` (a number or a bound name) times `scale`, which must come to a whole number.
-  Tick whole(const Value& v, double scale) const {
-    double number = v.number;
-    if (v.is_name()) {
-      const auto it = m_.bindings_.find(v.name);
-      if (it == m_.bindings_.end()) throw MonitorError(v.at, "no value given for '" + v.name + "'");
-      number = it->second;
-    }
-    const double x = number * scale;
-    if (!(x >= 0)) throw MonitorError(v.at, "a bound must not be negative");
-    if (x >= static_cast<double>(online::kNever / 2)) return online::kNever / 2;
-    const double rounded = std::round(x);
-    if (std::abs(x - rounded) > 1e-6 * std::max(1.0, x)) {
-      throw MonitorError(v.at, "the bound " + (v.is_name() ? v.name : v.text) +
-                                   " is finer than the run's time resolution");
-    }
-    return static_cast<Tick>(rounded);
-  }
+  Tick ticks(const Value& v) const { return bound_ticks(v, scale_, m_.bindings_); }
 
   OnlineMonitor& m_;
   TimeScale scale_;
@@ -199,11 +205,18 @@ class OnlineMonitor::Builder {
 };
 
 OnlineMonitor::OnlineMonitor(const Formula& formula, const TimeScale& scale,
-                             const Bindings& bindings)
+                             const Bindings& bindings, const Bound& run)
     : bindings_(bindings) {
   Builder builder(*this, scale);
   root_ = builder.build(formula, false);
   root_reader_ = blank_signals_.of[root_].add_reader();
+  if (run.kind == Bound::Kind::Time) {
+    time_bound_ = 2 * bound_ticks(run.high, scale, bindings);
+    // Beyond the time bound nothing exists, from the start on.
+    for (const auto& node : blank_nodes_) node->close({time_bound_, kLastRank});
+  } else if (run.kind == Bound::Kind::Steps) {
+    step_bound_ = bound_steps(run.high, bindings);
+  }
   reset();
 }
 
@@ -214,6 +227,8 @@ OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
       root_(other.root_),
       root_reader_(other.root_reader_),
       bindings_(other.bindings_),
+      time_bound_(other.time_bound_),
+      step_bound_(other.step_bound_),
       nodes_(clone_all(other.nodes_)),
       signals_(other.signals_),
       pending_(other.pending_),
@@ -250,9 +265,17 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
   } else {
     const Tick t = 2 * (time - origin_);  // half ticks
     if (t < last_.t) throw std::invalid_argument("online monitor: a step earlier than the last");
-    // The last step held up to this one: an instant when they share the time.
-    emit_leaves(t == last_.t ? last_ : Pos{t - 1, kLastRank});
     at = t == last_.t ? Pos{t, last_.n + 1} : Pos{t, 0};
+    if (t > time_bound_) {
+      finish_observation({time_bound_, kLastRank});
+      return verdict_;
+    }
+    if (signals_.segments.count() > step_bound_) {
+      finish_observation(online::before(at));
+      return verdict_;
+    }
+    // The last step held up to this one: an instant when they share the time.
+    emit_leaves(online::before(at));
   }
   last_ = at;
   signals_.segments.push(at);
@@ -299,6 +322,15 @@ Verdict OnlineMonitor::finish_cut(bool unknown) {
   nodes_ = std::move(nodes);
   signals_ = std::move(signals);
   return verdict;
+}
+
+void OnlineMonitor::finish_observation(Pos end) {
+  emit_leaves(kForever);
+  for (const auto& node : nodes_) node->close(end);
+  signals_.segments.finish();
+  advance();
+  const online::Run* run = root_run();
+  decide(run == nullptr ? Verdict::Undecided : run->value ? Verdict::True : Verdict::False);
 }
 
 void OnlineMonitor::decide(Verdict verdict) {

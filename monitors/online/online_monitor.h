@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -46,6 +47,12 @@ struct TimeScale {
 /// Values of the constants and parameters the formula names.
 using Bindings = std::map<std::string, double>;
 
+/// `v` (a number, or a name bound in `bindings`) as a bound in whole ticks of `scale`. Throws
+/// MonitorError when it is negative, unbound or finer than a tick.
+online::Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings);
+/// `v` as a whole number (a step count) at least 0. Throws MonitorError.
+std::int64_t bound_steps(const Value& v, const Bindings& bindings);
+
 /// A formula the monitor cannot take: a bound not a whole number of ticks, an unbound name.
 class MonitorError : public std::runtime_error {
  public:
@@ -55,8 +62,11 @@ class MonitorError : public std::runtime_error {
 
 class OnlineMonitor {
  public:
-  /// The monitor of `formula` (which must outlive it). Throws MonitorError.
-  OnlineMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings);
+  /// The monitor of `formula` (which must outlive it) on runs observed for `run` (a query's
+  /// [<=T] or [#<=K]; none: as long as they last): beyond it nothing exists for the formula,
+  /// so what it awaits fails and what it forbids holds. Throws MonitorError.
+  OnlineMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings,
+                const Bound& run = {});
   OnlineMonitor(const OnlineMonitor& other);
   OnlineMonitor& operator=(const OnlineMonitor& other);
   OnlineMonitor(OnlineMonitor&&) noexcept = default;
@@ -94,6 +104,8 @@ class OnlineMonitor {
   /// at every leaf (false: what holds for sure; true: what may hold); the state is kept.
   Verdict finish_cut(bool unknown);
   void decide(Verdict verdict);
+  /// The observation ended with `end`, its last position: the verdict is then known.
+  void finish_observation(online::Pos end);
   bool holds(const Leaf& leaf, const StateView& state) const;
   double evaluate(const Expr& e, const StateView& state) const;
 
@@ -104,6 +116,8 @@ class OnlineMonitor {
   std::vector<Leaf> leaves_;
   std::size_t root_ = 0, root_reader_ = 0;
   Bindings bindings_;
+  online::Tick time_bound_ = online::kNever;  // in half ticks
+  std::int64_t step_bound_ = std::numeric_limits<std::int64_t>::max();
 
   std::vector<std::unique_ptr<online::Node>> nodes_;
   online::Signals signals_;

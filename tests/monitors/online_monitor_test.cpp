@@ -168,6 +168,36 @@ TEST(Semantics, NextAndStepBoundsCountSteps) {
   EXPECT_EQ(verdict(instants, "X X X p"), Tri::True);
 }
 
+/// The monitor's verdict on `trace` for a whole query, observed for its run bound.
+Verdict query_verdict(const ReferenceTrace& trace, const std::string& query) {
+  const monitors::ParsedProperties parsed = monitors::parse_properties(query, "q.mtl");
+  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  const monitors::Query& q = parsed.file.queries.at(0);
+  OnlineMonitor monitor(*q.formula, kHalves, {}, q.run);
+  for (const ReferenceStep& s : trace.steps) monitor.step(StepView(s), 2 * s.time);
+  return monitor.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
+}
+
+TEST(OnlineMonitor, ObservesARunUpToItsBound) {
+  // Beyond the bound nothing exists: what is awaited fails, what is forbidden holds.
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=4](F p)"), Verdict::False);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=5](F p)"), Verdict::True);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=4.5](G !p)"), Verdict::True);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=5](G !p) >= 0.5"), Verdict::False);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=20](F[3,30] p)"), Verdict::True);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=4](!p U p)"), Verdict::False);
+  EXPECT_EQ(query_verdict(kLateP, "Pr[<=4](p R !p)"), Verdict::True);
+  // p at 3, q never: the response fails within the bound, even on a run cut later.
+  const ReferenceTrace request{{step(0, 0), step(3, 1), step(4, 0), step(30, 0)}, false};
+  EXPECT_EQ(query_verdict(request, "Pr[<=10](G (p -> F q))"), Verdict::False);
+  EXPECT_EQ(query_verdict(request, "Pr[<=2](G (p -> F q))"), Verdict::True);
+  EXPECT_EQ(query_verdict(request, "Pr[<=40](G (p -> F q))"), Verdict::Undecided);
+  // Steps: the initial state and the next K.
+  const ReferenceTrace instants{{step(0, 0), step(1, 0), step(1, 0), step(9, 1)}, true};
+  EXPECT_EQ(query_verdict(instants, "Pr[#<=2](F p)"), Verdict::False);
+  EXPECT_EQ(query_verdict(instants, "Pr[#<=3](F p)"), Verdict::True);
+}
+
 TEST(OnlineMonitor, DecidesAsSoonAsTheStepsDo) {
   const monitors::ParsedProperties parsed = parse("F[0,100] p");
   OnlineMonitor monitor(*parsed.file.queries.at(0).formula, kHalves, {});
