@@ -6,3 +6,4 @@
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"
 #include "monitors/resolve/resolve_names.h"
+#include "monitors/trace/trace_check.h"

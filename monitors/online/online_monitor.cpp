@@ -60,6 +60,60 @@ std::int64_t whole(const Value& v, double scale, const Bindings& bindings) {
 
 }  // namespace
 
+double evaluate(const Expr& e, const StateView& state, const Bindings& bindings) {
+  using K = Expr::Kind;
+  auto operand = [&](std::size_t k) { return evaluate(*e.operands[k], state, bindings); };
+  switch (e.kind) {
+    case K::Number:
+      return e.value.number;
+    case K::Bool:
+      return e.boolean ? 1 : 0;
+    case K::Name: {
+      if (e.reference.kind == Reference::Kind::Constant ||
+          e.reference.kind == Reference::Kind::Unresolved) {
+        const auto it = bindings.find(e.path);
+        if (it != bindings.end()) return it->second;
+      }
+      return state.value(e);
+    }
+    case K::Fired:
+      return state.fired(e) ? 1 : 0;
+    case K::Negate:
+      return -operand(0);
+    case K::Add:
+      return operand(0) + operand(1);
+    case K::Subtract:
+      return operand(0) - operand(1);
+    case K::Multiply:
+      return operand(0) * operand(1);
+    case K::Divide:
+      return operand(0) / operand(1);
+    case K::Modulo: {
+      const auto divisor = static_cast<std::int64_t>(operand(1));
+      if (divisor == 0) return std::numeric_limits<double>::quiet_NaN();
+      if (divisor == -1) return 0;  // INT64_MIN % -1 overflows
+      return static_cast<double>(static_cast<std::int64_t>(operand(0)) % divisor);
+    }
+    case K::Less:
+      return operand(0) < operand(1) ? 1 : 0;
+    case K::LessEqual:
+      return operand(0) <= operand(1) ? 1 : 0;
+    case K::Greater:
+      return operand(0) > operand(1) ? 1 : 0;
+    case K::GreaterEqual:
+      return operand(0) >= operand(1) ? 1 : 0;
+    case K::Equal:
+      return operand(0) == operand(1) ? 1 : 0;
+    case K::NotEqual:
+      return operand(0) != operand(1) ? 1 : 0;
+    case K::Call:
+      if (e.path == "abs") return std::abs(operand(0));
+      if (e.path == "min") return std::min(operand(0), operand(1));
+      return std::max(operand(0), operand(1));
+  }
+  return 0;
+}
+
 Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings) {
   const double per = v.unit == TimeUnit::None ? scale.ticks_per_unit
                                               : scale.ticks_per_second * seconds_per(v.unit);
@@ -365,61 +419,7 @@ std::size_t OnlineMonitor::held_runs() const {
 
 bool OnlineMonitor::holds(const Leaf& leaf, const StateView& state) const {
   if (leaf.predicate == nullptr) return leaf.negated;  // a constant: its value
-  return (evaluate(*leaf.predicate, state) != 0) != leaf.negated;
-}
-
-double OnlineMonitor::evaluate(const Expr& e, const StateView& state) const {
-  using K = Expr::Kind;
-  auto operand = [&](std::size_t k) { return evaluate(*e.operands[k], state); };
-  switch (e.kind) {
-    case K::Number:
-      return e.value.number;
-    case K::Bool:
-      return e.boolean ? 1 : 0;
-    case K::Name: {
-      if (e.reference.kind == Reference::Kind::Constant ||
-          e.reference.kind == Reference::Kind::Unresolved) {
-        const auto it = bindings_.find(e.path);
-        if (it != bindings_.end()) return it->second;
-      }
-      return state.value(e);
-    }
-    case K::Fired:
-      return state.fired(e) ? 1 : 0;
-    case K::Negate:
-      return -operand(0);
-    case K::Add:
-      return operand(0) + operand(1);
-    case K::Subtract:
-      return operand(0) - operand(1);
-    case K::Multiply:
-      return operand(0) * operand(1);
-    case K::Divide:
-      return operand(0) / operand(1);
-    case K::Modulo: {
-      const auto divisor = static_cast<std::int64_t>(operand(1));
-      if (divisor == 0) return std::numeric_limits<double>::quiet_NaN();
-      if (divisor == -1) return 0;  // INT64_MIN % -1 overflows
-      return static_cast<double>(static_cast<std::int64_t>(operand(0)) % divisor);
-    }
-    case K::Less:
-      return operand(0) < operand(1) ? 1 : 0;
-    case K::LessEqual:
-      return operand(0) <= operand(1) ? 1 : 0;
-    case K::Greater:
-      return operand(0) > operand(1) ? 1 : 0;
-    case K::GreaterEqual:
-      return operand(0) >= operand(1) ? 1 : 0;
-    case K::Equal:
-      return operand(0) == operand(1) ? 1 : 0;
-    case K::NotEqual:
-      return operand(0) != operand(1) ? 1 : 0;
-    case K::Call:
-      if (e.path == "abs") return std::abs(operand(0));
-      if (e.path == "min") return std::min(operand(0), operand(1));
-      return std::max(operand(0), operand(1));
-  }
-  return 0;
+  return (evaluate(*leaf.predicate, state, bindings_) != 0) != leaf.negated;
 }
 
 }  // namespace smcbip::monitors

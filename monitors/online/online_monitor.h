@@ -47,6 +47,10 @@ struct TimeScale {
 /// Values of the constants and parameters the formula names.
 using Bindings = std::map<std::string, double>;
 
+/// The value of a state expression in `state`; names bound in `bindings` (constants,
+/// parameters) read from there. Conditions are 1 or 0.
+double evaluate(const Expr& e, const StateView& state, const Bindings& bindings);
+
 /// `v` (a number, or a name bound in `bindings`) as a bound in whole ticks of `scale`. Throws
 /// MonitorError when it is negative, unbound or finer than a tick.
 online::Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings);
@@ -107,7 +111,6 @@ class OnlineMonitor {
   /// The observation ended with `end`, its last position: the verdict is then known.
   void finish_observation(online::Pos end);
   bool holds(const Leaf& leaf, const StateView& state) const;
-  double evaluate(const Expr& e, const StateView& state) const;
 
   // The formula as built (operands before what reads them; the root last) and its blank
   // signals, copied by reset.

@@ -1,7 +1,9 @@
-// smcbip: simulate BIP models (statistical checking arrives with the smc stage).
+// smcbip: simulate BIP models and judge recorded runs against properties (statistical
+// checking arrives with the smc stage).
 //
 // `smcbip simulate` exits with the reference engine's run codes (0 normal end, 1..7 model
-// errors), 64 for usage errors, 65 for bad input, 70 for internal errors.
+// errors), 64 for usage errors, 65 for bad input, 70 for internal errors. `smcbip monitor`
+// exits with 0 (no property false), 1 (one is), 2 (bad input or usage), 3 (internal error).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -12,6 +14,7 @@
 #include "engines/engines.h"
 #include "engines/options.h"
 #include "engines/plugin.h"
+#include "smc/tools/monitor_command.h"
 
 namespace {
 
@@ -76,9 +79,13 @@ int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateO
   return engines::run_simulation(model, options, engines::Externs::with_builtins(), "smcbip");
 }
 
+constexpr int kJudgingInputError = 2;
+constexpr int kJudgingInternalError = 3;
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  bool judging = false;
   try {
     CLI::App app{"smcbip: simulation and statistical model checking of BIP models"};
     app.require_subcommand(1);
@@ -91,21 +98,28 @@ int main(int argc, char** argv) {
     simulate->add_option("--compiled", compiled,
                          "run the model compiled by bipc gen: its plugin, or the folder of its "
                          "built project (with FILE, only if FILE is that model)");
+    tools::MonitorOptions monitor_options;
+    CLI::App* monitor =
+        app.add_subcommand("monitor", "judge recorded runs against the queries of a property file");
+    tools::register_monitor_options(*monitor, monitor_options);
+    // The exit codes of `monitor` are those of the checking commands, not of runs.
+    judging = argc > 1 && std::string(argv[1]) == "monitor";
     try {
       app.parse(argc, argv);
-      if (frontend.file.empty() && compiled.empty()) {
+      if (simulate->parsed() && frontend.file.empty() && compiled.empty()) {
         throw CLI::RequiredError("FILE (or --compiled)");
       }
     } catch (const CLI::CallForHelp& e) {
       return app.exit(e);
     } catch (const CLI::ParseError& e) {
       std::cerr << "smcbip: error: " << e.what() << "\n";
-      return engines::kUsageError;
+      return judging ? kJudgingInputError : engines::kUsageError;
     }
+    if (monitor->parsed()) return tools::run_monitor(monitor_options);
     if (!compiled.empty()) return run_compiled(frontend, compiled, options);
     return run_simulate(frontend, options);
   } catch (const std::exception& e) {
     std::cerr << "smcbip: internal error: " << e.what() << "\n";
-    return engines::kInternalError;
+    return judging ? kJudgingInternalError : engines::kInternalError;
   }
 }

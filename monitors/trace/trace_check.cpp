@@ -1,0 +1,338 @@
+#include "monitors/trace/trace_check.h"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <unordered_map>
+#include <utility>
+
+namespace smcbip::monitors {
+namespace {
+
+using Json = nlohmann::json;
+
+/// The path without its first component (the root's name, which trace paths may drop).
+std::string without_root(const std::string& path) {
+  const std::size_t dot = path.find('.');
+  return dot == std::string::npos ? std::string() : path.substr(dot + 1);
+}
+
+/// Whether a path of the trace and a path of a property name the same thing.
+bool same_path(const std::string& in_trace, const std::string& in_property) {
+  return in_trace == in_property || without_root(in_trace) == in_property ||
+         in_trace == without_root(in_property);
+}
+
+/// What a name of a predicate reads in each step.
+struct TraceName {
+  enum class Kind : std::uint8_t { Data, Place } kind = Kind::Data;
+  std::string key;    // Data: the data key; Place: the atom's key in "places"
+  std::string place;  // Place
+};
+
+/// One step of a trace as a state: its data, marked places and fired interaction.
+class StepState final : public StateView {
+ public:
+  explicit StepState(const std::unordered_map<const Expr*, TraceName>& names) : names_(names) {}
+
+  void read(Json line) { line_ = std::move(line); }
+
+  double value(const Expr& name) const override {
+    const TraceName& n = names_.at(&name);
+    if (n.kind == TraceName::Kind::Data) {
+      const Json* v = member(member(&line_, "data"), n.key);
+      if (v != nullptr && v->is_boolean()) return v->get<bool>() ? 1 : 0;
+      return v != nullptr && v->is_number() ? v->get<double>()
+                                            : std::numeric_limits<double>::quiet_NaN();
+    }
+    const Json* marked = member(member(&line_, "places"), n.key);
+    if (marked == nullptr || !marked->is_array()) return 0;
+    for (const Json& place : *marked) {
+      if (place.is_string() && place.get_ref<const std::string&>() == n.place) return 1;
+    }
+    return 0;
+  }
+
+  bool fired(const Expr& fired) const override {
+    const Json* f = member(&line_, "fired");
+    return f != nullptr && f->is_string() &&
+           same_path(f->get_ref<const std::string&>(), fired.path);
+  }
+
+ private:
+  /// The member `key` of an object, or null.
+  static const Json* member(const Json* object, const std::string& key) {
+    if (object == nullptr || !object->is_object()) return nullptr;
+    const auto it = object->find(key);
+    return it == object->end() ? nullptr : &*it;
+  }
+
+  const std::unordered_map<const Expr*, TraceName>& names_;
+  Json line_;
+};
+
+/// Reads the JSON lines of a trace: steps, then perhaps an end line.
+class TraceReader {
+ public:
+  TraceReader(std::istream& in, std::string path) : in_(in), path_(std::move(path)) {}
+
+  /// The next step's line, or nullopt when the trace is over.
+  std::optional<Json> next() {
+    std::string text;
+    while (std::getline(in_, text)) {
+      ++line_;
+      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+      if (!end_.empty()) fail("nothing may follow the end line");
+      Json line = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+      if (line.is_discarded() || !line.is_object()) fail("expected a JSON object on one line");
+      if (line.contains("end")) {
+        if (!line["end"].is_string()) fail("expected \"end\" to be a string");
+        end_ = line["end"].get<std::string>();
+        continue;
+      }
+      check_step(line);
+      return line;
+    }
+    return std::nullopt;
+  }
+
+  const std::string& end() const { return end_; }
+  [[noreturn]] void fail(const std::string& message) const {
+    throw TraceError(path_, line_, message);
+  }
+
+ private:
+  void check_step(const Json& line) const {
+    if (!line.contains("time") || !line["time"].is_number()) fail("expected a number \"time\"");
+    if (line.contains("fired") && !line["fired"].is_null() && !line["fired"].is_string()) {
+      fail("expected \"fired\" to be a string or null");
+    }
+    for (const char* part : {"places", "data"}) {
+      if (line.contains(part) && !line[part].is_object()) {
+        fail(std::string("expected \"") + part + "\" to be an object");
+      }
+    }
+  }
+
+  std::istream& in_;
+  std::string path_;
+  std::size_t line_ = 0;
+  std::string end_;
+};
+
+/// Binds the names of the file's predicates to the keys of the first step.
+class NameBinder {
+ public:
+  NameBinder(const Json& first, const Bindings& constants, bipc::Diagnostics& diagnostics)
+      : constants_(constants), diagnostics_(diagnostics) {
+    if (first.contains("data")) {
+      for (const auto& [key, value] : first["data"].items()) data_.push_back(key);
+    }
+    if (first.contains("places")) {
+      for (const auto& [key, value] : first["places"].items()) atoms_.push_back(key);
+    }
+  }
+
+  void expression(const Expr& e) {
+    for (const auto& operand : e.operands) expression(*operand);
+    if (e.kind != Expr::Kind::Name || constants_.contains(e.path)) return;
+    std::vector<TraceName> found;
+    for (const std::string& key : data_) {
+      if (same_path(key, e.path)) found.push_back({TraceName::Kind::Data, key, ""});
+    }
+    // Only marked places appear in a trace: a member that is no data is taken for a place.
+    const std::size_t dot = e.path.rfind('.');
+    if (found.empty() && dot != std::string::npos) {
+      for (const std::string& atom : atoms_) {
+        if (same_path(atom, e.path.substr(0, dot))) {
+          found.push_back({TraceName::Kind::Place, atom, e.path.substr(dot + 1)});
+        }
+      }
+    }
+    if (found.size() == 1) {
+      names_.emplace(&e, found.front());
+    } else {
+      diagnostics_.error(e.at, "'" + e.path + "' names " +
+                                   (found.empty() ? "no data or place of the trace"
+                                                  : "several data or places of the trace"));
+    }
+  }
+
+  void formula(const Formula& f) {
+    if (f.atom) expression(*f.atom);
+    for (const auto& operand : f.operands) formula(*operand);
+  }
+
+  std::unordered_map<const Expr*, TraceName> take() { return std::move(names_); }
+
+ private:
+  const Bindings& constants_;
+  bipc::Diagnostics& diagnostics_;
+  std::vector<std::string> data_, atoms_;
+  std::unordered_map<const Expr*, TraceName> names_;
+};
+
+/// The names a query reads (of bounds, thresholds and predicates).
+void names_in(const Expr& e, std::set<std::string>& names) {
+  if (e.kind == Expr::Kind::Name) names.insert(e.path);
+  for (const auto& operand : e.operands) names_in(*operand, names);
+}
+void names_in(const Bound& b, std::set<std::string>& names) {
+  for (const Value* v : {&b.low, &b.high}) {
+    if (v->is_name()) names.insert(v->name);
+  }
+}
+void names_in(const Formula& f, std::set<std::string>& names) {
+  names_in(f.bound, names);
+  if (f.atom) names_in(*f.atom, names);
+  for (const auto& operand : f.operands) names_in(*operand, names);
+}
+std::set<std::string> names_in(const Query& q) {
+  std::set<std::string> names;
+  names_in(q.run, names);
+  if (q.formula) names_in(*q.formula, names);
+  if (q.observed) names_in(*q.observed, names);
+  return names;
+}
+
+/// Every combination of the values of the parameters `used` names, added to `base`.
+std::vector<Bindings> combinations(const std::map<std::string, std::vector<double>>& parameters,
+                                   const std::set<std::string>& used, const Bindings& base) {
+  std::vector<Bindings> all{base};
+  for (const auto& [name, values] : parameters) {
+    if (!used.contains(name)) continue;
+    std::vector<Bindings> more;
+    for (const Bindings& b : all) {
+      for (double v : values) {
+        more.push_back(b);
+        more.back()[name] = v;
+      }
+    }
+    all = std::move(more);
+  }
+  return all;
+}
+
+/// The maximum or minimum of an expression over the states a run observes up to a time.
+class Extremum {
+ public:
+  Extremum(const Query& q, const TimeScale& scale, const Bindings& bindings)
+      : expr_(*q.observed), maximum_(q.maximum), bindings_(bindings) {
+    if (q.run.kind == Bound::Kind::Time) until_ = bound_ticks(q.run.high, scale, bindings);
+    if (q.run.kind == Bound::Kind::Steps) steps_ = bound_steps(q.run.high, bindings);
+  }
+  void step(const StateView& state, online::Tick time, std::int64_t index) {
+    if (time > until_ || index > steps_) return;
+    const double v = evaluate(expr_, state, bindings_);
+    if (!value_ || (maximum_ ? v > *value_ : v < *value_)) value_ = v;
+  }
+  std::optional<double> value() const { return value_; }
+
+ private:
+  const Expr& expr_;
+  bool maximum_;
+  Bindings bindings_;
+  online::Tick until_ = std::numeric_limits<online::Tick>::max();
+  std::int64_t steps_ = std::numeric_limits<std::int64_t>::max();
+  std::optional<double> value_;
+};
+
+/// What judges one query for one value of its parameters.
+struct Judge {
+  TraceResult result;
+  std::unique_ptr<OnlineMonitor> monitor;  // path formulas
+  std::unique_ptr<Extremum> extremum;      // expectations
+};
+
+}  // namespace
+
+Bindings constant_values(const PropertyFile& file) {
+  Bindings values;
+  for (const Declaration& d : file.declarations) {
+    if (d.kind != Declaration::Kind::Constant) continue;
+    values[d.name] = d.value.is_name() ? values.at(d.value.name) : d.value.number;
+  }
+  return values;
+}
+
+std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& file) {
+  std::map<std::string, std::vector<double>> values;
+  for (const Declaration& d : file.declarations) {
+    if (d.kind != Declaration::Kind::Parameter) continue;
+    std::vector<double>& list = values[d.name];
+    if (!d.range) {
+      for (const Value& v : d.values) list.push_back(v.number);
+      continue;
+    }
+    const double start = d.values[0].number, stop = d.values[1].number, step = d.values[2].number;
+    // Counted rather than accumulated, so that the last value is not lost to rounding.
+    const auto count = static_cast<std::int64_t>(std::floor((stop - start) / step + 1e-9));
+    for (std::int64_t i = 0; i <= count; ++i) list.push_back(start + static_cast<double>(i) * step);
+  }
+  return values;
+}
+
+TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
+                        const TimeScale& scale, bipc::Diagnostics& diagnostics) {
+  TraceReader reader(in, path);
+  std::optional<Json> line = reader.next();
+  if (!line) reader.fail("expected at least one step");
+
+  const Bindings constants = constant_values(file);
+  const auto parameters = parameter_values(file);
+  NameBinder binder(*line, constants, diagnostics);
+  for (const Query& q : file.queries) {
+    if (q.formula) binder.formula(*q.formula);
+    if (q.observed) binder.expression(*q.observed);
+  }
+  if (diagnostics.has_errors()) return {};
+  const std::unordered_map<const Expr*, TraceName> names = binder.take();
+
+  std::vector<Judge> judges;
+  for (std::size_t i = 0; i < file.queries.size(); ++i) {
+    const Query& q = file.queries[i];
+    for (const Bindings& bindings : combinations(parameters, names_in(q), constants)) {
+      Judge& judge = judges.emplace_back();
+      judge.result.query = i;
+      for (const auto& [name, value] : bindings) {
+        if (parameters.contains(name)) judge.result.parameters[name] = value;
+      }
+      if (q.formula) {
+        judge.monitor = std::make_unique<OnlineMonitor>(*q.formula, scale, bindings, q.run);
+      } else {
+        judge.extremum = std::make_unique<Extremum>(q, scale, bindings);
+      }
+    }
+  }
+
+  TraceReport report;
+  StepState state(names);
+  online::Tick first = 0, last = 0;
+  for (; line; line = reader.next(), ++report.steps) {
+    const double time = (*line)["time"].get<double>() * scale.ticks_per_unit;
+    if (!(std::abs(time) < 1e15)) reader.fail("the time is out of range");
+    const auto ticks = static_cast<online::Tick>(std::llround(time));
+    if (report.steps == 0) first = last = ticks;
+    if (ticks < last) reader.fail("the time goes back");
+    last = ticks;
+    state.read(std::move(*line));
+    for (Judge& judge : judges) {
+      if (judge.monitor) judge.monitor->step(state, ticks);
+      if (judge.extremum) {
+        judge.extremum->step(state, ticks - first, static_cast<std::int64_t>(report.steps));
+      }
+    }
+  }
+  report.end = reader.end();
+  const RunEnd end = report.end == "deadlock" ? RunEnd::Deadlock : RunEnd::Cut;
+  for (Judge& judge : judges) {
+    if (judge.monitor) judge.result.verdict = judge.monitor->end(end);
+    if (judge.extremum) judge.result.value = judge.extremum->value();
+    report.results.push_back(std::move(judge.result));
+  }
+  return report;
+}
+
+}  // namespace smcbip::monitors

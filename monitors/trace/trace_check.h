@@ -1,0 +1,57 @@
+// The queries of a property file judged on recorded runs (the JSON-lines exchange format of
+// DESIGN.md): each step is read once and given to every query's monitor, so a trace of any
+// length is checked in the memory its formulas need.
+#pragma once
+
+#include <cstddef>
+#include <istream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bipc/diagnostics.h"
+#include "monitors/online/online_monitor.h"
+#include "monitors/property/ast.h"
+
+namespace smcbip::monitors {
+
+/// A trace that is not in the exchange format: where (line, from 1) and what was expected.
+class TraceError : public std::runtime_error {
+ public:
+  TraceError(std::string path, std::size_t line, const std::string& message)
+      : std::runtime_error(path + ":" + std::to_string(line) + ": " + message),
+        path(std::move(path)),
+        line(line) {}
+  std::string path;
+  std::size_t line;
+};
+
+/// The verdict of one query for one value of its parameters.
+struct TraceResult {
+  std::size_t query = 0;  // index in PropertyFile::queries
+  Bindings parameters;    // the parameters the query names, with their values
+  Verdict verdict = Verdict::Undecided;
+  std::optional<double> value;  // expectations: the maximum or minimum over the run
+};
+
+struct TraceReport {
+  std::size_t steps = 0;
+  std::string end;  // as the trace says: "deadlock", "timelock", "limit", ... or "" (none)
+  std::vector<TraceResult> results;
+};
+
+/// Checks every query of `file` on the trace read from `in` (`path` names it in errors).
+/// Names of predicates are bound to the trace's data and places (paths may drop the root's
+/// name); what does not bind is reported in `diagnostics` (then the report is empty). A run
+/// that ends in a deadlock keeps its last state; one that ends otherwise, or without an end
+/// line, is cut short. Throws TraceError, and MonitorError for bounds the scale cannot hold.
+TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
+                        const TimeScale& scale, bipc::Diagnostics& diagnostics);
+
+/// The values of a file's constants, and each parameter's list of values.
+Bindings constant_values(const PropertyFile& file);
+std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& file);
+
+}  // namespace smcbip::monitors

@@ -1,0 +1,150 @@
+#include "smc/tools/monitor_command.h"
+
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "monitors/monitors.h"
+
+namespace smcbip::tools {
+namespace {
+
+using monitors::TraceReport;
+using monitors::TraceResult;
+using monitors::Verdict;
+
+constexpr int kFails = 1;
+constexpr int kInputError = 2;
+
+/// Nanosecond ticks per unit of the traces' times.
+const std::map<std::string, double> kTicksPerUnit{
+    {"s", 1e9}, {"ms", 1e6}, {"us", 1e3}, {"ns", 1.0}};
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out.precision(12);
+  out << v;
+  return out.str();
+}
+
+const char* verdict_text(Verdict v) {
+  return v == Verdict::True ? "true" : v == Verdict::False ? "false" : "undecided";
+}
+
+std::string result_text(const TraceResult& r) {
+  if (r.value) return number_text(*r.value);
+  return verdict_text(r.verdict);
+}
+
+std::string parameters_text(const monitors::Bindings& parameters) {
+  std::string text;
+  for (const auto& [name, value] : parameters) {
+    text += (text.empty() ? "  (" : ", ") + name + " = " + number_text(value);
+  }
+  return text.empty() ? text : text + ")";
+}
+
+struct Checked {
+  std::string path;
+  TraceReport report;
+};
+
+void print_table(const monitors::PropertyFile& file, const std::vector<Checked>& checked) {
+  for (const Checked& c : checked) {
+    std::cout << c.path << ": " << c.report.steps << " steps, "
+              << (c.report.end.empty() ? "no end line" : c.report.end) << "\n";
+    for (const TraceResult& r : c.report.results) {
+      std::string value = result_text(r);
+      value.resize(std::max<std::size_t>(value.size(), 10), ' ');
+      std::cout << "  " << value << " " << to_string(file.queries[r.query])
+                << parameters_text(r.parameters) << "\n";
+    }
+  }
+}
+
+void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& checked) {
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  for (const Checked& c : checked) {
+    for (const TraceResult& r : c.report.results) {
+      nlohmann::ordered_json line;
+      line["trace"] = c.path;
+      line["query"] = to_string(file.queries[r.query]);
+      line["param"] = nlohmann::ordered_json::object();
+      for (const auto& [name, value] : r.parameters) line["param"][name] = value;
+      if (r.value) {
+        line["value"] = *r.value;
+        line["verdict"] = nullptr;
+      } else {
+        line["verdict"] = r.verdict == Verdict::Undecided
+                              ? nlohmann::ordered_json(nullptr)
+                              : nlohmann::ordered_json(r.verdict == Verdict::True);
+      }
+      line["steps"] = c.report.steps;
+      line["end"] = c.report.end.empty() ? nlohmann::ordered_json(nullptr)
+                                         : nlohmann::ordered_json(c.report.end);
+      results.push_back(std::move(line));
+    }
+  }
+  nlohmann::ordered_json out;
+  out["results"] = std::move(results);
+  std::cout << out.dump(2) << "\n";
+}
+
+}  // namespace
+
+void register_monitor_options(CLI::App& command, MonitorOptions& options) {
+  command.add_option("PROP", options.properties, "the property file (.mtl or .ltl)")->required();
+  command.add_option("--trace", options.traces, "a recorded run in the JSON-lines format")
+      ->required();
+  command.add_flag("--json", options.json, "print the results as one JSON object");
+  command
+      .add_option("--time-unit", options.time_unit,
+                  "the unit of the traces' times and of bounds written without one")
+      ->check(CLI::IsMember({"s", "ms", "us", "ns"}))
+      ->capture_default_str();
+}
+
+int run_monitor(const MonitorOptions& options) {
+  const monitors::ParsedProperties parsed = monitors::load_properties(options.properties);
+  if (!parsed.ok()) {
+    std::cerr << parsed.diagnostics.format(parsed.sources);
+    return kInputError;
+  }
+  const monitors::TimeScale scale{kTicksPerUnit.at(options.time_unit), 1e9};
+  std::vector<Checked> checked;
+  for (const std::string& path : options.traces) {
+    std::ifstream in(path);
+    if (!in) {
+      std::cerr << "smcbip: error: cannot read the trace " << path << "\n";
+      return kInputError;
+    }
+    bipc::Diagnostics diagnostics;
+    try {
+      checked.push_back({path, monitors::check_trace(parsed.file, in, path, scale, diagnostics)});
+    } catch (const monitors::TraceError& e) {
+      std::cerr << "smcbip: error: " << e.what() << "\n";
+      return kInputError;
+    } catch (const monitors::MonitorError& e) {
+      diagnostics.error(e.at, e.what());
+    }
+    if (diagnostics.has_errors()) {
+      std::cerr << diagnostics.format(parsed.sources);
+      return kInputError;
+    }
+  }
+  if (options.json) {
+    print_json(parsed.file, checked);
+  } else {
+    print_table(parsed.file, checked);
+  }
+  for (const Checked& c : checked) {
+    for (const TraceResult& r : c.report.results) {
+      if (!r.value && r.verdict == Verdict::False) return kFails;
+    }
+  }
+  return 0;
+}
+
+}  // namespace smcbip::tools
