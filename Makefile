@@ -5,10 +5,10 @@ PRESET ?= $(if $(filter true,$(CI)),ci,default)
 BUILD_DIR := build
 FUZZ_SECONDS ?= 600
 ROOT := 'RoverSystem()'
-FORMAT_DIRS := bipc engines tests bench
+FORMAT_DIRS := bipc engines monitors smc tests bench
 PREFIX ?= /usr/local
 
-.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated format clean
+.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor format clean
 
 all: build
 
@@ -65,6 +65,10 @@ bench-engines: build
 # Steps per second of generated against interpreted models (reports, never fails on timings).
 bench-generated: build
 	bench/generated_steps.sh $(BUILD_DIR)
+
+# The online monitor's events per second and memory on million-event traces.
+bench-monitor: build
+	$(BUILD_DIR)/bin/monitor_events
 
 format:
 	find $(FORMAT_DIRS) \( -name '*.cpp' -o -name '*.h' \) -print0 2>/dev/null \

@@ -69,8 +69,8 @@ double evaluate(const Expr& e, const StateView& state, const Bindings& bindings)
     case K::Bool:
       return e.boolean ? 1 : 0;
     case K::Name: {
-      if (e.reference.kind == Reference::Kind::Constant ||
-          e.reference.kind == Reference::Kind::Unresolved) {
+      if (!bindings.empty() && (e.reference.kind == Reference::Kind::Constant ||
+                                e.reference.kind == Reference::Kind::Unresolved)) {
         const auto it = bindings.find(e.path);
         if (it != bindings.end()) return it->second;
       }
@@ -199,6 +199,7 @@ class OnlineMonitor::Builder {
   }
 
   std::size_t next(std::size_t phi) {
+    m_.reads_steps_ = true;
     return add("X" + std::to_string(phi), {'t'},
                [&] { return std::make_unique<online::Next>(self(), operand(phi)); });
   }
@@ -242,6 +243,7 @@ class OnlineMonitor::Builder {
       case Bound::Kind::None:
         return {};
       case Bound::Kind::Steps:
+        m_.reads_steps_ = true;
         return {online::Axis::Steps, 0, bound_steps(b.high, m_.bindings_)};
       case Bound::Kind::Time:  // in half ticks
         return {online::Axis::Time, 2 * ticks(b.low), 2 * ticks(b.high)};
@@ -281,12 +283,14 @@ OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
       root_(other.root_),
       root_reader_(other.root_reader_),
       bindings_(other.bindings_),
+      reads_steps_(other.reads_steps_),
       time_bound_(other.time_bound_),
       step_bound_(other.step_bound_),
       nodes_(clone_all(other.nodes_)),
       signals_(other.signals_),
       pending_(other.pending_),
       started_(other.started_),
+      steps_(other.steps_),
       origin_(other.origin_),
       last_(other.last_),
       verdict_(other.verdict_),
@@ -304,6 +308,7 @@ void OnlineMonitor::reset() {
   signals_ = blank_signals_;
   pending_.assign(leaves_.size(), false);
   started_ = false;
+  steps_ = 0;
   origin_ = 0;
   last_ = {};
   verdict_ = Verdict::Undecided;
@@ -324,7 +329,7 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
       finish_observation({time_bound_, kLastRank});
       return verdict_;
     }
-    if (signals_.segments.count() > step_bound_) {
+    if (steps_ > step_bound_) {
       finish_observation(online::before(at));
       return verdict_;
     }
@@ -332,7 +337,8 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
     emit_leaves(online::before(at));
   }
   last_ = at;
-  signals_.segments.push(at);
+  ++steps_;
+  if (reads_steps_) signals_.segments.push(at);
   for (std::size_t i = 0; i < leaves_.size(); ++i) pending_[i] = holds(leaves_[i], state);
   advance();
   if (const online::Run* run = root_run()) decide(run->value ? Verdict::True : Verdict::False);
@@ -401,6 +407,7 @@ void OnlineMonitor::emit_leaves(Pos end) {
 void OnlineMonitor::advance() {
   for (const auto& node : nodes_) node->advance(signals_);
   for (online::Signal& signal : signals_.of) signal.trim();
+  if (!reads_steps_) return;
   std::int64_t needed = signals_.segments.count() - 1;
   for (const auto& node : nodes_) {
     const std::int64_t n = node->segment_needed(signals_);

@@ -119,6 +119,7 @@ class OnlineMonitor {
   std::vector<Leaf> leaves_;
   std::size_t root_ = 0, root_reader_ = 0;
   Bindings bindings_;
+  bool reads_steps_ = false;  // some node counts steps (X, step bounds): segments are kept
   online::Tick time_bound_ = online::kNever;  // in half ticks
   std::int64_t step_bound_ = std::numeric_limits<std::int64_t>::max();
 
@@ -126,6 +127,7 @@ class OnlineMonitor {
   online::Signals signals_;
   std::vector<bool> pending_;  // per leaf: its value in the last step read
   bool started_ = false;
+  std::int64_t steps_ = 0;  // the steps read
   online::Tick origin_ = 0;
   online::Pos last_{};  // the last step's first position
   Verdict verdict_ = Verdict::Undecided;

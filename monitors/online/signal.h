@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <vector>
 
@@ -46,6 +45,37 @@ inline constexpr Pos kForever{kNever, kLastRank};
 struct Run {
   Pos end;
   bool value = false;
+};
+
+/// A queue of values in a ring of power-of-two capacity: the signals' storage, cheaper than a
+/// deque for the one push and one pop most steps make.
+template <class T>
+class Ring {
+ public:
+  std::size_t size() const { return tail_ - head_; }
+  bool empty() const { return tail_ == head_; }
+  T& operator[](std::size_t i) { return items_[(head_ + i) & mask_]; }
+  const T& operator[](std::size_t i) const { return items_[(head_ + i) & mask_]; }
+  T& back() { return (*this)[size() - 1]; }
+  const T& back() const { return (*this)[size() - 1]; }
+  void push_back(const T& item) {
+    if (size() == items_.size()) grow();
+    items_[tail_++ & mask_] = item;
+  }
+  void pop_front() { ++head_; }
+
+ private:
+  void grow() {
+    std::vector<T> bigger(std::max<std::size_t>(8, 2 * items_.size()));
+    for (std::size_t i = 0; i < size(); ++i) bigger[i] = (*this)[i];
+    tail_ = size();
+    head_ = 0;
+    items_ = std::move(bigger);
+    mask_ = items_.size() - 1;
+  }
+
+  std::vector<T> items_;
+  std::size_t head_ = 0, tail_ = 0, mask_ = 0;
 };
 
 /// A subformula's truth from the first position on, as far as it is known. Each reader (a
@@ -86,7 +116,8 @@ class Signal {
   /// Drops the runs every reader has passed.
   void trim() {
     if (cursors_.empty()) return;
-    const std::size_t low = *std::min_element(cursors_.begin(), cursors_.end());
+    std::size_t low = cursors_[0];
+    for (std::size_t c : cursors_) low = std::min(low, c);
     while (base_ < low) {
       runs_.pop_front();
       ++base_;
@@ -96,8 +127,8 @@ class Signal {
   std::size_t size() const { return runs_.size(); }
 
  private:
-  std::deque<Run> runs_;
-  std::size_t base_ = 0;    // the index of runs_.front() since the first run
+  Ring<Run> runs_;
+  std::size_t base_ = 0;    // the index of runs_[0] since the first run
   std::size_t passed_ = 0;  // the furthest cursor: runs before it were read whole
   std::vector<std::size_t> cursors_;
   Pos frontier_ = kNothing;
@@ -120,9 +151,13 @@ class Segments {
   }
   /// The segment holding `p`, as far as the segments are known.
   std::int64_t index_of(Pos p) const {
-    const auto it = std::upper_bound(starts_.begin(), starts_.end(), p);
-    if (it == starts_.begin()) return base_;
-    return base_ + static_cast<std::int64_t>(it - starts_.begin()) - 1;
+    // The last start at or before p, by bisection over the kept starts.
+    std::size_t low = 0, high = starts_.size();
+    while (high - low > 1) {
+      const std::size_t middle = low + (high - low) / 2;
+      (starts_[middle] <= p ? low : high) = middle;
+    }
+    return base_ + static_cast<std::int64_t>(low);
   }
 
   /// Drops the segments before `i` (keeping at least the last).
@@ -136,7 +171,7 @@ class Segments {
  private:
   std::int64_t size() const { return static_cast<std::int64_t>(starts_.size()); }
 
-  std::deque<Pos> starts_;
+  Ring<Pos> starts_;
   std::int64_t base_ = 0;
   bool finished_ = false;
 };
