@@ -2,6 +2,7 @@
 // the online monitor that judges runs against it.
 #pragma once
 
+#include "monitors/online/critical_bound.h"
 #include "monitors/online/online_monitor.h"
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"

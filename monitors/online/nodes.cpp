@@ -98,6 +98,7 @@ void Finally::advance(Signals& s) {
   while (const Run* run = phi.peek(phi_.reader)) {
     const Pos from = after(read_);
     if (run->value != dual_ && from <= end_) {
+      first_hit_ = std::min(first_hit_, from);
       // Witnesses from `from` to the run's end: found wherever the window reaches them.
       Pos to = std::min(run->end, end_);
       if (to != kForever && w_.low > 0) to = last_at(key(to, s) - w_.low);

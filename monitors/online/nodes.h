@@ -31,6 +31,9 @@ class Node {
   /// The run is observed up to `end` only: positions after it do not exist for the windows
   /// (what is not found by then never is).
   virtual void close(Pos /*end*/) {}
+  /// F and G: the first position of the run that decides them at the start (holds phi for
+  /// F, fails it for G), kForever when none has been read.
+  virtual Pos first_hit() const { return kForever; }
 };
 
 /// A reader of an operand's signal.
@@ -124,10 +127,12 @@ class Finally final : public Bounded {
       : Bounded(self, window, dual), phi_(phi) {}
   std::unique_ptr<Node> clone() const override { return std::make_unique<Finally>(*this); }
   void advance(Signals& s) override;
+  Pos first_hit() const override { return first_hit_; }
 
  private:
   Operand phi_;
   Pos read_ = kNothing;  // the end of the last run of phi read
+  Pos first_hit_ = kForever;
 };
 
 /// hold U[a,b] goal (non-strict): a position of the window holds goal and every position

@@ -294,7 +294,9 @@ OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
       origin_(other.origin_),
       last_(other.last_),
       verdict_(other.verdict_),
-      decided_(other.decided_) {}
+      decided_(other.decided_),
+      sure_hit_(other.sure_hit_),
+      possible_hit_(other.possible_hit_) {}
 
 OnlineMonitor& OnlineMonitor::operator=(const OnlineMonitor& other) {
   if (this != &other) *this = OnlineMonitor(other);
@@ -313,6 +315,7 @@ void OnlineMonitor::reset() {
   last_ = {};
   verdict_ = Verdict::Undecided;
   decided_ = false;
+  sure_hit_ = possible_hit_ = kForever;
 }
 
 Verdict OnlineMonitor::step(const StateView& state, Tick time) {
@@ -359,16 +362,19 @@ Verdict OnlineMonitor::end(RunEnd how) {
     decide(run->value ? Verdict::True : Verdict::False);
   } else {
     // Kleene's value: true if true whatever follows reads, false if false whatever it reads.
-    const Verdict sure = finish_cut(false);
-    const Verdict maybe = finish_cut(true);
+    Pos sure_hit, possible_hit;
+    const Verdict sure = finish_cut(false, sure_hit);
+    const Verdict maybe = finish_cut(true, possible_hit);
     decide(sure == Verdict::True     ? Verdict::True
            : maybe == Verdict::False ? Verdict::False
                                      : Verdict::Undecided);
+    sure_hit_ = sure_hit;
+    possible_hit_ = possible_hit;
   }
   return verdict_;
 }
 
-Verdict OnlineMonitor::finish_cut(bool unknown) {
+Verdict OnlineMonitor::finish_cut(bool unknown, Pos& hit) {
   auto nodes = clone_all(nodes_);
   online::Signals signals = signals_;
   for (const Leaf& leaf : leaves_) signals_.of[leaf.node].emit(kForever, unknown);
@@ -379,6 +385,7 @@ Verdict OnlineMonitor::finish_cut(bool unknown) {
   const Verdict verdict = run == nullptr ? Verdict::Undecided
                           : run->value   ? Verdict::True
                                          : Verdict::False;
+  hit = nodes_[root_]->first_hit();
   nodes_ = std::move(nodes);
   signals_ = std::move(signals);
   return verdict;
@@ -396,6 +403,7 @@ void OnlineMonitor::finish_observation(Pos end) {
 void OnlineMonitor::decide(Verdict verdict) {
   verdict_ = verdict;
   decided_ = true;
+  sure_hit_ = possible_hit_ = nodes_[root_]->first_hit();
 }
 
 void OnlineMonitor::emit_leaves(Pos end) {

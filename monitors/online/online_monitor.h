@@ -83,8 +83,15 @@ class OnlineMonitor {
   /// The run ended after the last step read; returns the final verdict.
   Verdict end(RunEnd how);
   Verdict verdict() const { return verdict_; }
+  /// Whether the verdict is final: the steps read decided it, or the run ended.
+  bool over() const { return decided_; }
   /// Ready for a new run.
   void reset();
+
+  /// When the root is F or G: the first position that decides it (see Node::first_hit), for
+  /// sure and possibly (they differ on runs cut short), once the verdict is known.
+  online::Pos first_hit_for_sure() const { return sure_hit_; }
+  online::Pos first_hit_possibly() const { return possible_hit_; }
 
   /// The runs held in the subformulas' signals (what the monitor remembers of the run).
   std::size_t held_runs() const;
@@ -105,8 +112,9 @@ class OnlineMonitor {
   /// The root's value at the first position, once known.
   const online::Run* root_run();
   /// The verdict of a run cut short after the last step when what follows reads `unknown`
-  /// at every leaf (false: what holds for sure; true: what may hold); the state is kept.
-  Verdict finish_cut(bool unknown);
+  /// at every leaf (false: what holds for sure; true: what may hold), and the root's first
+  /// hit then; the state is kept.
+  Verdict finish_cut(bool unknown, online::Pos& hit);
   void decide(Verdict verdict);
   /// The observation ended with `end`, its last position: the verdict is then known.
   void finish_observation(online::Pos end);
@@ -132,6 +140,7 @@ class OnlineMonitor {
   online::Pos last_{};  // the last step's first position
   Verdict verdict_ = Verdict::Undecided;
   bool decided_ = false;
+  online::Pos sure_hit_ = online::kForever, possible_hit_ = online::kForever;
 };
 
 }  // namespace smcbip::monitors

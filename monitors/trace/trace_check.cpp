@@ -1,5 +1,6 @@
 #include "monitors/trace/trace_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -7,6 +8,8 @@
 #include <set>
 #include <unordered_map>
 #include <utility>
+
+#include "monitors/online/critical_bound.h"
 
 namespace smcbip::monitors {
 namespace {
@@ -244,7 +247,23 @@ struct Judge {
   TraceResult result;
   std::unique_ptr<OnlineMonitor> monitor;  // path formulas
   std::unique_ptr<Extremum> extremum;      // expectations
+  CriticalBound* sweep = nullptr;          // F[0,t] / G[0,t] over a parameter: all values
+  double value = 0;                        // of the parameter, for the sweep
 };
+
+/// The one parameter a query names, when its formula sweeps it by a critical bound.
+std::optional<std::string> swept_parameter(
+    const Query& q, const std::map<std::string, std::vector<double>>& parameters) {
+  if (!q.formula || q.run.kind != Bound::Kind::None) return std::nullopt;
+  std::optional<std::string> swept;
+  for (const std::string& name : names_in(q)) {
+    if (!parameters.contains(name)) continue;
+    if (swept) return std::nullopt;
+    swept = name;
+  }
+  if (swept && !has_critical_bound(*q.formula, *swept)) return std::nullopt;
+  return swept;
+}
 
 }  // namespace
 
@@ -282,7 +301,9 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
 
   const Bindings constants = constant_values(file);
   const auto parameters = parameter_values(file);
-  NameBinder binder(*line, constants, diagnostics);
+  Bindings declared = constants;  // names that are no part of the trace
+  for (const auto& [name, values] : parameters) declared[name] = values.front();
+  NameBinder binder(*line, declared, diagnostics);
   for (const Query& q : file.queries) {
     if (q.formula) binder.formula(*q.formula);
     if (q.observed) binder.expression(*q.observed);
@@ -291,8 +312,22 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   const std::unordered_map<const Expr*, TraceName> names = binder.take();
 
   std::vector<Judge> judges;
+  std::vector<std::unique_ptr<CriticalBound>> sweeps;
   for (std::size_t i = 0; i < file.queries.size(); ++i) {
     const Query& q = file.queries[i];
+    if (const auto swept = swept_parameter(q, parameters)) {
+      const std::vector<double>& values = parameters.at(*swept);
+      sweeps.push_back(std::make_unique<CriticalBound>(
+          *q.formula, *swept, *std::max_element(values.begin(), values.end()), scale, constants));
+      for (double value : values) {
+        Judge& judge = judges.emplace_back();
+        judge.result.query = i;
+        judge.result.parameters[*swept] = value;
+        judge.sweep = sweeps.back().get();
+        judge.value = value;
+      }
+      continue;
+    }
     for (const Bindings& bindings : combinations(parameters, names_in(q), constants)) {
       Judge& judge = judges.emplace_back();
       judge.result.query = i;
@@ -318,6 +353,7 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
     if (ticks < last) reader.fail("the time goes back");
     last = ticks;
     state.read(std::move(*line));
+    for (auto& sweep : sweeps) sweep->step(state, ticks);
     for (Judge& judge : judges) {
       if (judge.monitor) judge.monitor->step(state, ticks);
       if (judge.extremum) {
@@ -327,8 +363,10 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   }
   report.end = reader.end();
   const RunEnd end = report.end == "deadlock" ? RunEnd::Deadlock : RunEnd::Cut;
+  for (auto& sweep : sweeps) sweep->end(end);
   for (Judge& judge : judges) {
     if (judge.monitor) judge.result.verdict = judge.monitor->end(end);
+    if (judge.sweep) judge.result.verdict = judge.sweep->verdict(judge.value);
     if (judge.extremum) judge.result.value = judge.extremum->value();
     report.results.push_back(std::move(judge.result));
   }

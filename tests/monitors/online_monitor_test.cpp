@@ -288,6 +288,15 @@ ReferenceTrace random_trace(std::mt19937& random) {
   return trace;
 }
 
+std::string describe(const ReferenceTrace& trace) {
+  std::string text;
+  for (const ReferenceStep& s : trace.steps) {
+    text += "(" + std::to_string(s.time) + ": p=" + std::to_string(int(s.values.at("p"))) +
+            " q=" + std::to_string(int(s.values.at("q"))) + ") ";
+  }
+  return text + (trace.deadlocked ? "deadlocked" : "cut");
+}
+
 TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
   // 30,000 pairs, seeds fixed: a disagreement names the formula and the trace.
   FormulaMaker maker(20261122);
@@ -300,16 +309,60 @@ TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
     const ReferenceTrace trace = random_trace(traces);
     const Tri expected = reference_verdict(formula, trace);
     const Tri got = monitor_verdict(formula, trace);
-    std::string steps;
-    for (const ReferenceStep& s : trace.steps) {
-      steps += " (" + std::to_string(s.time) + ": p=" + std::to_string(int(s.values.at("p"))) +
-               " q=" + std::to_string(int(s.values.at("q"))) + ")";
-    }
-    ASSERT_EQ(got, expected) << "case " << i << ": " << text << " on" << steps
-                             << (trace.deadlocked ? " deadlocked" : " cut");
+    ASSERT_EQ(got, expected) << "case " << i << ": " << text << " on " << describe(trace);
     decided += got != Tri::Unknown;
   }
   EXPECT_GT(decided, 15000);  // the cases are not mostly undecided
+}
+
+TEST(CriticalBound, JudgesEveryValueOfTheParameterFromOneRun) {
+  // F[0,t] phi and G[0,t] phi for t = 0, 0.5, ..., 5 from one monitor each, against a monitor
+  // per value, on random phi (without t) and random traces, deadlocked and cut short.
+  FormulaMaker maker(424242);
+  std::mt19937 traces(11);
+  int decided = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const std::string phi = maker.make(1 + i % 3);
+    const ReferenceTrace trace = random_trace(traces);
+    for (const char* op : {"F", "G"}) {
+      const std::string text = std::string(op) + "[0,t] (" + phi + ")";
+      const monitors::ParsedProperties parsed =
+          monitors::parse_properties("param t = 0:5:0.5\nP=? [ " + text + " ]", "t.mtl");
+      ASSERT_TRUE(parsed.ok()) << text;
+      const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+      ASSERT_TRUE(monitors::has_critical_bound(formula, "t")) << text;
+      monitors::CriticalBound sweep(formula, "t", 5.0, kHalves, {});
+      for (const ReferenceStep& s : trace.steps) {
+        if (sweep.step(StepView(s), 2 * s.time)) break;
+      }
+      sweep.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
+      for (int halves = 0; halves <= 10; ++halves) {
+        const double t = halves / 2.0;
+        OnlineMonitor single(formula, kHalves, {{"t", t}});
+        for (const ReferenceStep& s : trace.steps) single.step(StepView(s), 2 * s.time);
+        const Verdict expected = single.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
+        ASSERT_EQ(sweep.verdict(t), expected)
+            << "case " << i << ": " << text << " at t = " << t << " on " << describe(trace);
+        decided += expected != Verdict::Undecided;
+      }
+    }
+  }
+  EXPECT_GT(decided, 30000);
+}
+
+TEST(CriticalBound, OnlyForFAndGUpToTheParameter) {
+  const monitors::ParsedProperties parsed = monitors::parse_properties(
+      "param t = {1, 2}\nP=? [ F[0,t] p ]\nP=? [ G[1,t] p ]\nP=? [ F[0,t] (p U[0,t] q) ]\n"
+      "P=? [ !F[0,t] p ]\nP=? [ G[0,t] p ]",
+      "t.mtl");
+  ASSERT_TRUE(parsed.ok());
+  const auto& q = parsed.file.queries;
+  EXPECT_TRUE(monitors::has_critical_bound(*q[0].formula, "t"));
+  EXPECT_FALSE(monitors::has_critical_bound(*q[1].formula, "t"));
+  EXPECT_FALSE(monitors::has_critical_bound(*q[2].formula, "t"));
+  EXPECT_FALSE(monitors::has_critical_bound(*q[3].formula, "t"));
+  EXPECT_TRUE(monitors::has_critical_bound(*q[4].formula, "t"));
+  EXPECT_FALSE(monitors::has_critical_bound(*q[4].formula, "u"));
 }
 
 /// A state where p and q take given values.
