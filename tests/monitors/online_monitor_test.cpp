@@ -365,6 +365,23 @@ TEST(CriticalBound, OnlyForFAndGUpToTheParameter) {
   EXPECT_FALSE(monitors::has_critical_bound(*q[4].formula, "u"));
 }
 
+monitors::Horizon horizon_of(const std::string& formula) {
+  const monitors::ParsedProperties parsed = parse(formula);
+  return monitors::horizon(*parsed.file.queries.at(0).formula, {1e6, 1e9}, {});
+}
+
+TEST(Horizon, NestedSumsOfUpperBounds) {
+  const monitors::Horizon nested = horizon_of("G[0,10] (p -> F[2,5] q) && X X F{3} p");
+  EXPECT_TRUE(nested.bounded);
+  EXPECT_EQ(nested.time, 15'000'000);  // ticks of a nanosecond, the bounds in milliseconds
+  EXPECT_EQ(nested.steps, 5);
+  const monitors::Horizon units = horizon_of("F[0,1s] G[0,500us] p U[0,3] q");
+  EXPECT_EQ(units.time, 1'003'500'000);  // (F[0,1s] G[0,500us] p) U[0,3] q
+  EXPECT_FALSE(horizon_of("G[0,10] F p").bounded);
+  EXPECT_TRUE(horizon_of("p && q").bounded);
+  EXPECT_EQ(horizon_of("p && q").time, 0);
+}
+
 /// A state where p and q take given values.
 class PairView final : public monitors::StateView {
  public:
