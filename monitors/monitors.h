@@ -8,4 +8,5 @@
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"
 #include "monitors/resolve/resolve_names.h"
+#include "monitors/run/run_monitor.h"
 #include "monitors/trace/trace_check.h"

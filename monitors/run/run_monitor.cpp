@@ -1,0 +1,47 @@
+#include "monitors/run/run_monitor.h"
+
+#include <limits>
+
+namespace smcbip::monitors {
+
+double EngineState::value(const Expr& name) const {
+  const Reference& r = name.reference;
+  switch (r.kind) {
+    case Reference::Kind::Data: {
+      const bipc::ir::System& system = state_.system();
+      const auto kind = system.atom_types[system.atoms[r.atom].type].data[r.index].type.kind;
+      const engines::Val v = state_.data(r.atom, r.index);
+      if (kind == bipc::ir::ValueKind::Bool) return v.b ? 1 : 0;
+      if (kind == bipc::ir::ValueKind::Float) return v.f;
+      return static_cast<double>(v.i);
+    }
+    case Reference::Kind::Place:
+      return state_.marked(r.atom, r.index) ? 1 : 0;
+    case Reference::Kind::Clock:
+      return state_.clock(r.atom, r.index);
+    default:  // resolve_names leaves nothing else to read from a state
+      return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+bool EngineState::fired(const Expr& fired) const {
+  const Reference& r = fired.reference;
+  using Fired = engines::StepInfo::Fired;
+  if (r.kind == Reference::Kind::Connector) {
+    return step_.fired == Fired::Interaction && step_.connector == r.index;
+  }
+  return r.kind == Reference::Kind::InternalPort &&
+         (step_.fired == Fired::Internal || step_.fired == Fired::External) &&
+         step_.atom == r.atom && step_.port == r.index;
+}
+
+bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView& state) {
+  return monitor_.step(EngineState(step, state), step.time) == Verdict::Undecided;
+}
+
+void RunMonitor::finish(engines::RunEnd end, int, const std::string&) {
+  // A run stopped once the verdict was known needs no end; any other stop cuts it short.
+  monitor_.end(end == engines::RunEnd::Deadlock ? RunEnd::Deadlock : RunEnd::Cut);
+}
+
+}  // namespace smcbip::monitors

@@ -1,0 +1,45 @@
+// The online monitor on the engines' runs: an observer that reads each step's state through
+// the names resolve_names bound to the model, and stops the run once the verdict is known.
+#pragma once
+
+#include <string>
+
+#include "engines/run_observer.h"
+#include "monitors/online/online_monitor.h"
+
+namespace smcbip::monitors {
+
+/// A state of a run as predicates read it: names resolved against the model (Expr::reference).
+class EngineState final : public StateView {
+ public:
+  EngineState(const engines::StepInfo& step, const engines::StateView& state)
+      : step_(step), state_(state) {}
+  double value(const Expr& name) const override;
+  bool fired(const Expr& fired) const override;
+
+ private:
+  const engines::StepInfo& step_;
+  const engines::StateView& state_;
+};
+
+/// Judges runs against a formula resolved against their model (resolve_names): give it to
+/// engines::Simulator::run as the observer; reset() before each run.
+class RunMonitor final : public engines::RunObserver {
+ public:
+  /// `scale`: nanosecond ticks (the engines' time) per unit of the model's clocks and per
+  /// second. `run`: the query's run bound, if any.
+  RunMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings,
+             const Bound& run = {})
+      : monitor_(formula, scale, bindings, run) {}
+
+  bool observe(const engines::StepInfo& step, const engines::StateView& state) override;
+  void finish(engines::RunEnd end, int code, const std::string& message) override;
+
+  Verdict verdict() const { return monitor_.verdict(); }
+  void reset() { monitor_.reset(); }
+
+ private:
+  OnlineMonitor monitor_;
+};
+
+}  // namespace smcbip::monitors
