@@ -5,17 +5,12 @@
 #include <optional>
 #include <string>
 
+#include "channel_model.h"
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::monitors {
 namespace {
-
-const bipc::ir::System& channel() {
-  static const std::optional<bipc::ir::System> system =
-      tests::load_model(std::string(SMCBIP_SOURCE_DIR) + "/models/channel.bip", "System()");
-  return *system;
-}
 
 /// The diagnostics of resolving `text` against `system` (empty when it resolves), and the file.
 std::string resolve(const std::string& text, const bipc::ir::System& system,

@@ -9,18 +9,13 @@
 #include <sstream>
 #include <string>
 
+#include "channel_model.h"
 #include "engines/engines.h"
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::monitors {
 namespace {
-
-const bipc::ir::System& channel() {
-  static const std::optional<bipc::ir::System> system =
-      tests::load_model(std::string(SMCBIP_SOURCE_DIR) + "/models/channel.bip", "System()");
-  return *system;
-}
 
 // The Channel model counts milliseconds; the engines, nanoseconds.
 constexpr TimeScale kMilliseconds{1e6, 1e9};
