@@ -59,21 +59,43 @@ void Next::advance(Signals& s) {
 }
 
 std::int64_t Bounded::segment_needed(const Signals& s) const {
-  if (w_.axis == Axis::Time) return -1;
+  if (w_.axis == Axis::Time && !w_.pointwise) return -1;
   const Pos next = after(s.of[self_].frontier());
   if (next > kForever) return s.segments.count() - 1;
-  return std::max<std::int64_t>(0, key(next, s) - w_.high);
+  if (w_.axis == Axis::Steps) return std::max<std::int64_t>(0, key(next, s) - w_.high);
+  const std::int64_t window = s.segments.first_from(key(next, s) - w_.high);
+  return std::max<std::int64_t>(0, std::min(s.segments.index_of(next), window) - 1);
 }
 
 Tick Bounded::key(Pos p, const Signals& s) const {
-  if (p >= kForever) return kNever;
-  return w_.axis == Axis::Time ? p.t : s.segments.index_of(p);
+  if (w_.axis == Axis::Steps || !w_.pointwise) {
+    if (p >= kForever) return kNever;
+    return w_.axis == Axis::Steps ? s.segments.index_of(p) : p.t;
+  }
+  // Pointwise: a step's time, also for the last step of a deadlocked run, which no later
+  // time follows.
+  const std::int64_t i = s.segments.index_of(p);
+  if (s.segments.is_last(i) && s.segments.unknown_tail()) return p >= kForever ? kNever : p.t;
+  return s.segments.start(i).t;
 }
 
 Pos Bounded::first_at(Tick k, const Signals& s) const {
   if (k <= 0) return kFirst;
   if (k >= kNever) return kForever;
-  return w_.axis == Axis::Time ? Pos{k, 0} : s.segments.start(k);
+  if (w_.axis == Axis::Steps) return s.segments.start(k);
+  if (!w_.pointwise) return {k, 0};
+  const std::int64_t i = s.segments.first_from(k);
+  if (i < s.segments.count()) return s.segments.start(i);
+  const Pos last = s.segments.start(s.segments.count() - 1);
+  if (s.segments.unknown_tail()) return std::max(last, Pos{k, 0});
+  return s.segments.is_last(s.segments.count() - 1) ? kForever : std::max(after(last), Pos{k, 0});
+}
+
+Pos Bounded::last_at(Tick k, const Signals& s) const {
+  if (!w_.pointwise) return {k, kLastRank};
+  const std::int64_t i = s.segments.first_from(k + 1);
+  if (i < s.segments.count()) return before(s.segments.start(i));
+  return s.segments.unknown_tail() ? Pos{k, kLastRank} : kForever;
 }
 
 void Bounded::found(Signals& s, Pos from, Pos to) const {
@@ -93,16 +115,39 @@ Pos Bounded::settled_before(Pos from, const Signals& s) const {
   return before(first_at(key(from, s) - w_.high, s));
 }
 
+void Bounded::witnesses(Signals& s, Pos from, Pos to, Pos floor) const {
+  if (w_.low == 0) {
+    // The witness nearest a position is the first one after it: from, or itself.
+    found(s, std::max(floor, first_at(key(from, s) - w_.high, s)), to);
+  } else if (!w_.pointwise) {
+    reach(s, key(from, s), key(to, s), floor);
+  } else {
+    // Pointwise: the times of the steps in from..to, which the windows must hold themselves.
+    const Segments& segments = s.segments;
+    for (std::int64_t i = segments.index_of(from); i < segments.count(); ++i) {
+      const Pos start = std::max(from, segments.start(i));
+      if (start > to) break;
+      if (segments.is_last(i) && segments.unknown_tail()) {
+        reach(s, key(start, s), key(to, s), floor);
+        break;
+      }
+      reach(s, key(start, s), key(start, s), floor);
+    }
+  }
+}
+
+void Bounded::reach(Signals& s, Tick first, Tick last, Pos floor) const {
+  const Pos to = last >= kNever ? kForever : last_at(last - w_.low, s);
+  found(s, std::max(floor, first_at(first - w_.high, s)), to);
+}
+
 void Finally::advance(Signals& s) {
   Signal& phi = s.of[phi_.node];
   while (const Run* run = phi.peek(phi_.reader)) {
     const Pos from = after(read_);
     if (run->value != dual_ && from <= end_) {
       first_hit_ = std::min(first_hit_, from);
-      // Witnesses from `from` to the run's end: found wherever the window reaches them.
-      Pos to = std::min(run->end, end_);
-      if (to != kForever && w_.low > 0) to = last_at(key(to, s) - w_.low);
-      found(s, first_at(key(from, s) - w_.high, s), to);
+      witnesses(s, from, std::min(run->end, end_), kFirst);
     }
     read_ = run->end;
     phi.pop(phi_.reader);
@@ -146,22 +191,14 @@ void Until::piece(Signals& s, Pos from, Pos to, bool hold, bool goal) {
       stretch_ = true;
       stretch_start_ = from;
     }
-    if (goal) {
-      // Witnesses from..to, reached from anywhere in the stretch through positions that hold.
-      Pos end = to;
-      if (to != kForever && w_.low > 0) end = last_at(key(to, s) - w_.low);
-      found(s, std::max(stretch_start_, first_at(key(from, s) - w_.high, s)), end);
-    }
+    // Witnesses from..to, reached from anywhere in the stretch through positions that hold.
+    if (goal) witnesses(s, from, to, stretch_start_);
     return;
   }
   if (stretch_) {
     // The stretch ends: its positions can still reach `from` as a witness, and nothing beyond;
     // but not an open interval (odd), part of which they would have to hold over.
-    if (goal && from.t % 2 == 0) {
-      Pos end = before(from);
-      if (w_.low > 0) end = std::min(end, last_at(key(from, s) - w_.low));
-      found(s, std::max(stretch_start_, first_at(key(from, s) - w_.high, s)), end);
-    }
+    if (goal && from.t % 2 == 0) witnesses(s, from, from, stretch_start_);
     settle(s, before(from));
     stretch_ = false;
   }

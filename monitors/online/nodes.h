@@ -82,10 +82,13 @@ class Next final : public Node {
 /// How a bound counts: time (ticks) or steps.
 enum class Axis : std::uint8_t { Time, Steps };
 
-/// The window [low, high] of a bounded operator, on its axis.
+/// The window [low, high] of a bounded operator, on its axis. `pointwise`: time is read at
+/// steps only, every position of a step taking the step's time (the positions of the unknown
+/// rest of a run cut short keep their own).
 struct Window {
   Axis axis = Axis::Time;
   Tick low = 0, high = kNever;
+  bool pointwise = false;
 };
 
 /// What the bounded operators share: the window, the emission of found and settled spans,
@@ -103,11 +106,17 @@ class Bounded : public Node {
   /// The first position whose axis value is at least `k` (k clamped to the run).
   Pos first_at(Tick k, const Signals& s) const;
   /// The last position whose axis value is at most `k` (time axis only).
-  static Pos last_at(Tick k) { return {k, kLastRank}; }
+  Pos last_at(Tick k, const Signals& s) const;
 
   /// The positions `from`..`to` found (a witness lies in their window); those between the
   /// last emitted and `from` are certain not to be.
   void found(Signals& s, Pos from, Pos to) const;
+  /// The positions from..to hold what the operator looks for: every position from `floor` on
+  /// whose window holds one of them is found.
+  void witnesses(Signals& s, Pos from, Pos to, Pos floor) const;
+  /// The positions whose windows hold an axis value of [first, last], from `floor` on, are
+  /// found (kNever: no last).
+  void reach(Signals& s, Tick first, Tick last, Pos floor) const;
   /// Every position up to `to` not found yet never will be.
   void settle(Signals& s, Pos to) const;
   /// The positions whose window starts at or after `from` (for `from` the first position a

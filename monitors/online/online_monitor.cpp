@@ -129,7 +129,11 @@ std::int64_t bound_steps(const Value& v, const Bindings& bindings) {
 /// && and || applied.
 class OnlineMonitor::Builder {
  public:
-  Builder(OnlineMonitor& monitor, const TimeScale& scale) : m_(monitor), scale_(scale) {}
+  Builder(OnlineMonitor& monitor, const TimeScale& scale, Reading reading)
+      : m_(monitor), scale_(scale), pointwise_(reading == Reading::Pointwise) {
+    // Pointwise windows find the steps whose times they hold.
+    if (pointwise_) m_.reads_steps_ = true;
+  }
 
   std::size_t build(const Formula& f, bool negated) {
     using K = Formula::Kind;
@@ -241,12 +245,12 @@ class OnlineMonitor::Builder {
   online::Window window(const Bound& b) const {
     switch (b.kind) {
       case Bound::Kind::None:
-        return {};
+        return {online::Axis::Time, 0, online::kNever, pointwise_};
       case Bound::Kind::Steps:
         m_.reads_steps_ = true;
         return {online::Axis::Steps, 0, bound_steps(b.high, m_.bindings_)};
       case Bound::Kind::Time:  // in half ticks
-        return {online::Axis::Time, 2 * ticks(b.low), 2 * ticks(b.high)};
+        return {online::Axis::Time, 2 * ticks(b.low), 2 * ticks(b.high), pointwise_};
     }
     return {};
   }
@@ -255,15 +259,16 @@ class OnlineMonitor::Builder {
 
   OnlineMonitor& m_;
   TimeScale scale_;
+  bool pointwise_;
   std::map<std::string, std::size_t> ids_;
   std::vector<Shape> shapes_;
   bool fresh_ = false;  // the last add made a node
 };
 
 OnlineMonitor::OnlineMonitor(const Formula& formula, const TimeScale& scale,
-                             const Bindings& bindings, const Bound& run)
+                             const Bindings& bindings, const Bound& run, Reading reading)
     : bindings_(bindings) {
-  Builder builder(*this, scale);
+  Builder builder(*this, scale, reading);
   root_ = builder.build(formula, false);
   root_reader_ = blank_signals_.of[root_].add_reader();
   if (run.kind == Bound::Kind::Time) {
@@ -379,7 +384,7 @@ Verdict OnlineMonitor::finish_cut(bool unknown, Pos& hit) {
   online::Signals signals = signals_;
   for (const Leaf& leaf : leaves_) signals_.of[leaf.node].emit(kForever, unknown);
   signals_.segments.push(online::after(last_));
-  signals_.segments.finish();
+  signals_.segments.finish(/*unknown=*/true);
   advance();
   const online::Run* run = root_run();
   const Verdict verdict = run == nullptr ? Verdict::Undecided

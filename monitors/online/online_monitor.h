@@ -44,6 +44,11 @@ struct TimeScale {
   double ticks_per_second = 1e9;
 };
 
+/// How time is read: continuously (a state holds from its step's time to the next step's), or
+/// pointwise (only at steps: a window holds the steps whose times fall in it; a deadlocked run
+/// has no step after its last, whose state X still reads).
+enum class Reading : std::uint8_t { Continuous, Pointwise };
+
 /// Values of the constants and parameters the formula names.
 using Bindings = std::map<std::string, double>;
 
@@ -70,7 +75,7 @@ class OnlineMonitor {
   /// [<=T] or [#<=K]; none: as long as they last): beyond it nothing exists for the formula,
   /// so what it awaits fails and what it forbids holds. Throws MonitorError.
   OnlineMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings,
-                const Bound& run = {});
+                const Bound& run = {}, Reading reading = Reading::Continuous);
   OnlineMonitor(const OnlineMonitor& other);
   OnlineMonitor& operator=(const OnlineMonitor& other);
   OnlineMonitor(OnlineMonitor&&) noexcept = default;

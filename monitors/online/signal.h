@@ -139,8 +139,13 @@ class Signal {
 class Segments {
  public:
   void push(Pos start) { starts_.push_back(start); }
-  /// No step follows the last one: it lasts forever.
-  void finish() { finished_ = true; }
+  /// No step follows the last one: it lasts forever. `unknown`: it stands for the unknown
+  /// rest of a run cut short, whose steps may come at any later time.
+  void finish(bool unknown = false) {
+    finished_ = true;
+    unknown_tail_ = unknown;
+  }
+  bool unknown_tail() const { return unknown_tail_; }
 
   std::int64_t count() const { return base_ + static_cast<std::int64_t>(starts_.size()); }
   /// Whether segment `i` is the last and lasts forever.
@@ -160,6 +165,20 @@ class Segments {
     return base_ + static_cast<std::int64_t>(low);
   }
 
+  /// The first kept segment starting at half tick `t` or later, count() when none does.
+  std::int64_t first_from(Tick t) const {
+    std::size_t low = 0, high = starts_.size();  // the answer lies in [low, high]
+    while (low < high) {
+      const std::size_t middle = low + (high - low) / 2;
+      if (starts_[middle].t >= t) {
+        high = middle;
+      } else {
+        low = middle + 1;
+      }
+    }
+    return base_ + static_cast<std::int64_t>(low);
+  }
+
   /// Drops the segments before `i` (keeping at least the last).
   void drop_before(std::int64_t i) {
     while (base_ < i && starts_.size() > 1) {
@@ -173,7 +192,7 @@ class Segments {
 
   Ring<Pos> starts_;
   std::int64_t base_ = 0;
-  bool finished_ = false;
+  bool finished_ = false, unknown_tail_ = false;
 };
 
 }  // namespace smcbip::monitors::online

@@ -294,7 +294,7 @@ std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& 
 }
 
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
-                        const TimeScale& scale, bipc::Diagnostics& diagnostics) {
+                        const TimeScale& scale, bipc::Diagnostics& diagnostics, Reading reading) {
   TraceReader reader(in, path);
   std::optional<Json> line = reader.next();
   if (!line) reader.fail("expected at least one step");
@@ -315,7 +315,9 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   std::vector<std::unique_ptr<CriticalBound>> sweeps;
   for (std::size_t i = 0; i < file.queries.size(); ++i) {
     const Query& q = file.queries[i];
-    if (const auto swept = swept_parameter(q, parameters)) {
+    const auto swept =
+        reading == Reading::Continuous ? swept_parameter(q, parameters) : std::nullopt;
+    if (swept) {
       const std::vector<double>& values = parameters.at(*swept);
       sweeps.push_back(std::make_unique<CriticalBound>(
           *q.formula, *swept, *std::max_element(values.begin(), values.end()), scale, constants));
@@ -335,7 +337,8 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
         if (parameters.contains(name)) judge.result.parameters[name] = value;
       }
       if (q.formula) {
-        judge.monitor = std::make_unique<OnlineMonitor>(*q.formula, scale, bindings, q.run);
+        judge.monitor =
+            std::make_unique<OnlineMonitor>(*q.formula, scale, bindings, q.run, reading);
       } else {
         judge.extremum = std::make_unique<Extremum>(q, scale, bindings);
       }

@@ -48,7 +48,8 @@ struct TraceReport {
 /// that ends in a deadlock keeps its last state; one that ends otherwise, or without an end
 /// line, is cut short. Throws TraceError, and MonitorError for bounds the scale cannot hold.
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
-                        const TimeScale& scale, bipc::Diagnostics& diagnostics);
+                        const TimeScale& scale, bipc::Diagnostics& diagnostics,
+                        Reading reading = Reading::Continuous);
 
 /// The values of a file's constants, and each parameter's list of values.
 Bindings constant_values(const PropertyFile& file);

@@ -99,6 +99,9 @@ void register_monitor_options(CLI::App& command, MonitorOptions& options) {
   command.add_option("--trace", options.traces, "a recorded run in the JSON-lines format")
       ->required();
   command.add_flag("--json", options.json, "print the results as one JSON object");
+  command.add_flag("--pointwise", options.pointwise,
+                   "read time at steps only (default: continuously, a state holding until the "
+                   "next step)");
   command
       .add_option("--time-unit", options.time_unit,
                   "the unit of the traces' times and of bounds written without one")
@@ -122,7 +125,10 @@ int run_monitor(const MonitorOptions& options) {
     }
     bipc::Diagnostics diagnostics;
     try {
-      checked.push_back({path, monitors::check_trace(parsed.file, in, path, scale, diagnostics)});
+      const monitors::Reading reading =
+          options.pointwise ? monitors::Reading::Pointwise : monitors::Reading::Continuous;
+      checked.push_back(
+          {path, monitors::check_trace(parsed.file, in, path, scale, diagnostics, reading)});
     } catch (const monitors::TraceError& e) {
       std::cerr << "smcbip: error: " << e.what() << "\n";
       return kInputError;

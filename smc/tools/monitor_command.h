@@ -12,6 +12,7 @@ struct MonitorOptions {
   std::string properties;
   std::vector<std::string> traces;
   bool json = false;
+  bool pointwise = false;
   std::string time_unit = "ms";
 };
 

@@ -315,6 +315,69 @@ TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
   EXPECT_GT(decided, 15000);  // the cases are not mostly undecided
 }
 
+/// The pointwise monitor's verdict on `trace`; a verdict given before the end must hold.
+Tri pointwise_verdict(const monitors::Formula& formula, const ReferenceTrace& trace) {
+  OnlineMonitor monitor(formula, kHalves, {}, {}, monitors::Reading::Pointwise);
+  Verdict early = Verdict::Undecided;
+  for (const ReferenceStep& step : trace.steps) {
+    const Verdict v = monitor.step(StepView(step), 2 * step.time);
+    if (early == Verdict::Undecided) early = v;
+  }
+  const Verdict final = monitor.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
+  if (early != Verdict::Undecided) {
+    EXPECT_EQ(early, final) << "an early verdict changed";
+  }
+  return tri_of(final);
+}
+
+Tri pointwise(const ReferenceTrace& trace, const std::string& text) {
+  const monitors::ParsedProperties parsed = parse(text);
+  const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+  const Tri expected = PointwiseReference(trace).verdict(formula);
+  EXPECT_EQ(pointwise_verdict(formula, trace), expected) << text;
+  return expected;
+}
+
+TEST(Pointwise, WindowsHoldTheStepsInThem) {
+  // p at the step at 5 only: continuously it holds on [5, 8); pointwise at 5.
+  const ReferenceTrace trace{{step(0, 0), step(5, 1), step(8, 0)}, true};
+  EXPECT_EQ(pointwise(trace, "F[6,7] p"), Tri::False);
+  EXPECT_EQ(verdict(trace, "F[6,7] p"), Tri::True);
+  EXPECT_EQ(pointwise(trace, "F[5,5] p"), Tri::True);
+  EXPECT_EQ(pointwise(trace, "G[1,4] p"), Tri::True);  // no step in [1, 4]
+  EXPECT_EQ(pointwise(trace, "!p U[0,5] p"), Tri::True);
+  EXPECT_EQ(pointwise(trace, "G[6,100] !p"), Tri::True);  // the deadlock: no step after 8
+  EXPECT_EQ(pointwise(trace, "F[9,100] !p"), Tri::False);
+  EXPECT_EQ(pointwise(trace, "X X X !p"), Tri::True);
+  const ReferenceTrace cut{{step(0, 0), step(5, 1)}, false};
+  EXPECT_EQ(pointwise(cut, "F[6,7] p"), Tri::Unknown);
+  EXPECT_EQ(pointwise(cut, "F[0,4] p"), Tri::False);
+  EXPECT_EQ(pointwise(cut, "F[0,5] !p"), Tri::True);
+  // A run of equal values over several steps holds their times only, not those between.
+  const ReferenceTrace sparse{{step(0, 0, 1), step(2, 0, 1), step(5, 1, 0), step(8, 1, 0)}, true};
+  EXPECT_EQ(pointwise(sparse, "G[1,1] F[2,5] (q U[1,1] p)"), Tri::True);
+  EXPECT_EQ(pointwise(sparse, "X F[2,5] (q U[1,1] p)"), Tri::False);
+  EXPECT_EQ(pointwise(sparse, "G[1,4] !p"), Tri::True);
+  EXPECT_EQ(pointwise(sparse, "q U[3,4] p"), Tri::False);
+}
+
+TEST(Pointwise, AgreesWithItsReferenceOnRandomFormulasAndTraces) {
+  FormulaMaker maker(777);
+  std::mt19937 traces(5);
+  int decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::string text = maker.make(1 + i % 4);
+    const monitors::ParsedProperties parsed = parse(text);
+    const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+    const ReferenceTrace trace = random_trace(traces);
+    const Tri expected = PointwiseReference(trace).verdict(formula);
+    ASSERT_EQ(pointwise_verdict(formula, trace), expected)
+        << "case " << i << ": " << text << " on " << describe(trace);
+    decided += expected != Tri::Unknown;
+  }
+  EXPECT_GT(decided, 10000);
+}
+
 TEST(CriticalBound, JudgesEveryValueOfTheParameterFromOneRun) {
   // F[0,t] phi and G[0,t] phi for t = 0, 0.5, ..., 5 from one monitor each, against a monitor
   // per value, on random phi (without t) and random traces, deadlocked and cut short.

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -243,6 +244,86 @@ class ReferenceEvaluator {
 
   const ReferenceTrace& trace_;
   std::int64_t horizon2_;
+};
+
+/// The pointwise reading (--pointwise), as plainly: the points are the steps; a window holds
+/// the steps whose times fall in it; after a deadlock no step comes (X reads the last state
+/// again); after a cut, steps may come at the last step's time or later, unknown.
+class PointwiseReference {
+ public:
+  explicit PointwiseReference(const ReferenceTrace& trace) : trace_(trace) {}
+
+  Tri verdict(const monitors::Formula& f) const { return eval(f, 0); }
+
+ private:
+  std::size_t last() const { return trace_.steps.size() - 1; }
+  double time(std::size_t i) const { return static_cast<double>(trace_.steps[i].time); }
+
+  Tri eval(const monitors::Formula& f, std::size_t i) const {
+    using K = monitors::Formula::Kind;
+    switch (f.kind) {
+      case K::True:
+        return Tri::True;
+      case K::False:
+        return Tri::False;
+      case K::Atom: {
+        // The continuous evaluator's arithmetic, at the step's state.
+        ReferenceTrace one{{trace_.steps[i]}, true};
+        return ReferenceEvaluator(one, 1).verdict(f);
+      }
+      case K::Not:
+        return tri_not(eval(*f.operands[0], i));
+      case K::And:
+        return tri_and(eval(*f.operands[0], i), eval(*f.operands[1], i));
+      case K::Or:
+        return tri_or(eval(*f.operands[0], i), eval(*f.operands[1], i));
+      case K::Implies:
+        return tri_or(tri_not(eval(*f.operands[0], i)), eval(*f.operands[1], i));
+      case K::Next:
+        if (i < last()) return eval(*f.operands[0], i + 1);
+        return trace_.deadlocked ? eval(*f.operands[0], i) : Tri::Unknown;
+      case K::Finally:
+        return until(nullptr, *f.operands[0], f.bound, i, false, false);
+      case K::Globally:
+        return tri_not(until(nullptr, *f.operands[0], f.bound, i, true, false));
+      case K::Until:
+        return until(f.operands[0].get(), *f.operands[1], f.bound, i, false, false);
+      case K::Release:
+        return tri_not(until(f.operands[0].get(), *f.operands[1], f.bound, i, true, true));
+    }
+    return Tri::Unknown;
+  }
+
+  Tri until(const monitors::Formula* hold, const monitors::Formula& goal, const monitors::Bound& b,
+            std::size_t i, bool negate_goal, bool negate_hold) const {
+    using BK = monitors::Bound::Kind;
+    const double low = b.kind == BK::Time ? b.low.number : 0;
+    const double high = b.kind == BK::Time ? b.high.number : 1e18;
+    const std::size_t steps =
+        b.kind == BK::Steps ? static_cast<std::size_t>(b.high.number) : SIZE_MAX;
+    Tri result = Tri::False, held = Tri::True;
+    for (std::size_t j = i; j <= last() && j - i <= steps; ++j) {
+      const double d = time(j) - time(i);
+      if (d > high) break;
+      if (d >= low) {
+        Tri g = eval(goal, j);
+        if (negate_goal) g = tri_not(g);
+        result = tri_or(result, tri_and(held, g));
+      }
+      if (hold != nullptr) {
+        Tri h = eval(*hold, j);
+        if (negate_hold) h = tri_not(h);
+        held = tri_and(held, h);
+      }
+      if (result == Tri::True || held == Tri::False) return result;
+    }
+    // Steps after a cut come at the last step's time or later.
+    const bool reaches = b.kind == BK::Steps ? last() - i < steps : time(last()) - time(i) <= high;
+    if (!trace_.deadlocked && reaches) result = tri_or(result, tri_and(held, Tri::Unknown));
+    return result;
+  }
+
+  const ReferenceTrace& trace_;
 };
 
 }  // namespace smcbip::tests
