@@ -47,8 +47,9 @@ Tri tri_of(Verdict v) {
 constexpr monitors::TimeScale kHalves{2.0, 2.0};
 
 /// The monitor's verdict on `trace`; a verdict given before the end must be the final one.
-Tri monitor_verdict(const monitors::Formula& formula, const ReferenceTrace& trace) {
-  OnlineMonitor monitor(formula, kHalves, {});
+Tri monitor_verdict(const monitors::Formula& formula, const ReferenceTrace& trace,
+                    monitors::Reading reading = monitors::Reading::Continuous) {
+  OnlineMonitor monitor(formula, kHalves, {}, {}, reading);
   Verdict early = Verdict::Undecided;
   for (const ReferenceStep& step : trace.steps) {
     const Verdict v = monitor.step(StepView(step), 2 * step.time);
@@ -315,26 +316,11 @@ TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
   EXPECT_GT(decided, 15000);  // the cases are not mostly undecided
 }
 
-/// The pointwise monitor's verdict on `trace`; a verdict given before the end must hold.
-Tri pointwise_verdict(const monitors::Formula& formula, const ReferenceTrace& trace) {
-  OnlineMonitor monitor(formula, kHalves, {}, {}, monitors::Reading::Pointwise);
-  Verdict early = Verdict::Undecided;
-  for (const ReferenceStep& step : trace.steps) {
-    const Verdict v = monitor.step(StepView(step), 2 * step.time);
-    if (early == Verdict::Undecided) early = v;
-  }
-  const Verdict final = monitor.end(trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut);
-  if (early != Verdict::Undecided) {
-    EXPECT_EQ(early, final) << "an early verdict changed";
-  }
-  return tri_of(final);
-}
-
 Tri pointwise(const ReferenceTrace& trace, const std::string& text) {
   const monitors::ParsedProperties parsed = parse(text);
   const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
   const Tri expected = PointwiseReference(trace).verdict(formula);
-  EXPECT_EQ(pointwise_verdict(formula, trace), expected) << text;
+  EXPECT_EQ(monitor_verdict(formula, trace, monitors::Reading::Pointwise), expected) << text;
   return expected;
 }
 
@@ -371,7 +357,7 @@ TEST(Pointwise, AgreesWithItsReferenceOnRandomFormulasAndTraces) {
     const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
     const ReferenceTrace trace = random_trace(traces);
     const Tri expected = PointwiseReference(trace).verdict(formula);
-    ASSERT_EQ(pointwise_verdict(formula, trace), expected)
+    ASSERT_EQ(monitor_verdict(formula, trace, monitors::Reading::Pointwise), expected)
         << "case " << i << ": " << text << " on " << describe(trace);
     decided += expected != Tri::Unknown;
   }
