@@ -59,7 +59,7 @@ class Checker {
     run_bound(q.run);
     if (q.kind == Query::Kind::Hypothesis) threshold(q.threshold);
     if (q.kind == Query::Kind::Expectation) {
-      whole(q.runs, "the number of runs", 1.0);
+      if (q.pr_form) whole(q.runs, "the number of runs", 1.0);
       expression(*q.observed);
     } else {
       formula(*q.formula);

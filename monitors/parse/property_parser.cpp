@@ -190,23 +190,36 @@ class Parser {
     return q;
   }
 
+  // E[<=T; N](max: e) (UPPAAL), or E=? [ max: e ] (the runs' length and number left to the
+  // checking).
   Query e_query() {
     Query q;
     q.kind = Query::Kind::Expectation;
     q.at = take().at;  // E
-    q.pr_form = true;
-    expect("[", "after E (E[<=T; N])");
+    q.pr_form = !symbol("=?");
+    if (!q.pr_form) {
+      expect("[", "after E=?");
+      observed(q);
+      expect("]", "after the observed expression");
+      return q;
+    }
+    expect("[", "after E (E[<=T; N] or E=?)");
     q.run = run_bound();
     expect(";", "between the run bound and the number of runs");
     q.runs = value("the number of runs");
     expect("]", "after the number of runs");
     expect("(", "before max: or min:");
+    observed(q);
+    expect(")", "after the observed expression");
+    return q;
+  }
+
+  // `max: e` or `min: e`.
+  void observed(Query& q) {
     if (!is_word("max") && !is_word("min")) fail("'max' or 'min'");
     q.maximum = take().text == "max";
     expect(":", "after " + std::string(q.maximum ? "max" : "min"));
     q.observed = expression();
-    expect(")", "after the observed expression");
-    return q;
   }
 
   // `<=T` (time) or `#<=K` (steps), inside a query's brackets.

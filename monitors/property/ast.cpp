@@ -236,9 +236,11 @@ std::string to_string(const Query& q) {
       return std::string("P") + comparison_text(q.comparison) + threshold + " [ " +
              to_string(*q.formula) + " ]";
     }
-    case Query::Kind::Expectation:
-      return "E[" + run_bound(q.run) + "; " + to_string(q.runs) + "](" +
-             (q.maximum ? "max: " : "min: ") + to_string(*q.observed) + ")";
+    case Query::Kind::Expectation: {
+      const std::string observed = (q.maximum ? "max: " : "min: ") + to_string(*q.observed);
+      if (!q.pr_form) return "E=? [ " + observed + " ]";
+      return "E[" + run_bound(q.run) + "; " + to_string(q.runs) + "](" + observed + ")";
+    }
   }
   return "";
 }

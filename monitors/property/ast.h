@@ -114,11 +114,11 @@ struct Query {
   enum class Kind : std::uint8_t {
     Estimate,     // P=? [ phi ], Pr[<=T](phi)
     Hypothesis,   // P>=theta [ phi ], Pr[<=T](phi) >= theta
-    Expectation,  // E[<=T; N](max: expr)
+    Expectation,  // E[<=T; N](max: expr), E=? [ max: expr ]
   } kind = Kind::Estimate;
   Location at;
   Bound run;             // [<=T] or [#<=K]; Kind::None: the formula's horizon bounds the run
-  bool pr_form = false;  // written Pr[...](...) (UPPAAL) rather than P...[ ] (PRISM)
+  bool pr_form = false;  // written Pr[...](...), E[...](...) (UPPAAL) rather than P/E...[ ]
   Comparison comparison = Comparison::GreaterEqual;
   Value threshold;                   // Hypothesis
   std::unique_ptr<Formula> formula;  // Estimate, Hypothesis
