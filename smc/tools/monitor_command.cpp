@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bipc/bipc.h"
 #include "monitors/monitors.h"
 
 namespace smcbip::tools {
@@ -92,6 +93,28 @@ void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& 
   std::cout << out.dump(2) << "\n";
 }
 
+/// Resolves the properties' names against the model of --model (errors into `parsed`); false
+/// when the model itself does not load (reported).
+bool names_of_model(const MonitorOptions& options, monitors::ParsedProperties& parsed) {
+  bipc::FrontendOptions frontend;
+  frontend.file = options.model;
+  frontend.root = options.root;
+  frontend.include_dirs = options.include_dirs;
+  const bipc::FrontendResult model = bipc::run_frontend(frontend, /*need_system=*/true);
+  if (model.diags.has_errors() || !model.system) {
+    bipc::Diagnostics sorted = model.diags;
+    sorted.sort_by_location();
+    std::cerr << sorted.format(model.model.files);
+    if (!model.diags.has_errors()) {
+      std::cerr << "smcbip: error: " << options.model
+                << " has no single top compound; name the root with --root\n";
+    }
+    return false;
+  }
+  monitors::resolve_names(parsed.file, *model.system, parsed.diagnostics);
+  return true;
+}
+
 }  // namespace
 
 void register_monitor_options(CLI::App& command, MonitorOptions& options) {
@@ -107,10 +130,17 @@ void register_monitor_options(CLI::App& command, MonitorOptions& options) {
                   "the unit of the traces' times and of bounds written without one")
       ->check(CLI::IsMember({"s", "ms", "us", "ns"}))
       ->capture_default_str();
+  command.add_option("--model", options.model,
+                     "the model the runs come from: the properties' names must be its own");
+  command.add_option("--root", options.root, "the model's root compound (with --model)");
+  command.add_option("-I", options.include_dirs, "a folder of packages the model uses");
 }
 
 int run_monitor(const MonitorOptions& options) {
-  const monitors::ParsedProperties parsed = monitors::load_properties(options.properties);
+  monitors::ParsedProperties parsed = monitors::load_properties(options.properties);
+  if (parsed.ok() && !options.model.empty() && !names_of_model(options, parsed)) {
+    return kInputError;
+  }
   if (!parsed.ok()) {
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;

@@ -14,6 +14,9 @@ struct MonitorOptions {
   bool json = false;
   bool pointwise = false;
   std::string time_unit = "ms";
+  // A model whose names the properties must use (checked before the traces are read).
+  std::string model, root;
+  std::vector<std::string> include_dirs;
 };
 
 /// Adds the options of `smcbip monitor` to its subcommand.
