@@ -1,0 +1,7 @@
+// The smc library: the statistics of statistical model checking (hypothesis tests, sampling
+// plans, interval estimates).
+#pragma once
+
+#include "smc/stats/interval_estimation.h"
+#include "smc/stats/sampling_plans.h"
+#include "smc/stats/sprt.h"

@@ -1,0 +1,142 @@
+// The statistics of smc on Bernoulli sources of known p, with fixed seeds. Published vectors
+// for the sampling plans; error rates, coverage and sample counts of the sequential methods
+// against their guarantees, with the binomial slack stated where it is used. The `slow`
+// variants repeat each case 1,000 times; the quick ones 200 times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+
+#include "smc/smc.h"
+
+namespace smcbip::smc {
+namespace {
+
+int repetitions() { return std::getenv("SMCBIP_SLOW_STATS") != nullptr ? 1000 : 200; }
+
+/// The most failures among `n` trials of probability at most `rate` that a sound method shows
+/// but for a chance below 0.2%: the mean plus three standard deviations (plus one).
+double slack_bound(int n, double rate) {
+  const double mean = n * rate;
+  return mean + 3 * std::sqrt(n * rate * (1 - rate)) + 1;
+}
+
+TEST(SamplingPlans, SingleSamplingPlanMatchesPublishedVectors) {
+  const SamplingPlan strict = single_sampling_plan(0.5, 0.05, 0.01, 0.01);
+  EXPECT_EQ(strict.n, 539u);
+  EXPECT_EQ(strict.c, 269u);
+  const SamplingPlan loose = single_sampling_plan(0.5, 0.05, 0.05, 0.05);
+  EXPECT_EQ(loose.n, 269u);
+  EXPECT_EQ(loose.c, 134u);
+}
+
+TEST(SamplingPlans, ChernoffSampleSizes) {
+  EXPECT_EQ(chernoff_samples(0.05, 0.05), 738u);
+  EXPECT_EQ(chernoff_samples(0.01, 0.05), 18445u);
+  EXPECT_EQ(chernoff_samples(0.01, 0.01), 26492u);
+}
+
+TEST(ClopperPearson, KnownIntervals) {
+  // No success in 10 runs: the upper end solves (1 - p)^10 = alpha / 2.
+  const Interval none = clopper_pearson(0, 10, 0.05);
+  EXPECT_EQ(none.low, 0.0);
+  EXPECT_NEAR(none.high, 1 - std::pow(0.025, 0.1), 1e-9);
+  const Interval all = clopper_pearson(10, 10, 0.05);
+  EXPECT_NEAR(all.low, std::pow(0.025, 0.1), 1e-9);
+  EXPECT_EQ(all.high, 1.0);
+}
+
+struct SprtCase {
+  double theta, delta, alpha, beta;
+};
+
+/// Wald's approximation of the expected number of runs when p is `p`.
+double wald_asn(const SprtCase& c, double p) {
+  const double p0 = c.theta + c.delta, p1 = c.theta - c.delta;
+  const double a = std::log(c.beta / (1 - c.alpha)), b = std::log((1 - c.beta) / c.alpha);
+  const double step = p * std::log(p1 / p0) + (1 - p) * std::log((1 - p1) / (1 - p0));
+  const double accept = p == p0 ? 1 - c.alpha : c.beta;  // the chance to end at a
+  return (accept * a + (1 - accept) * b) / step;
+}
+
+TEST(Sprt, ErrorRatesStayWithinAlphaAndBeta) {
+  for (const SprtCase c : {SprtCase{0.5, 0.05, 0.05, 0.05}, SprtCase{0.8, 0.02, 0.01, 0.05},
+                           SprtCase{0.1, 0.05, 0.05, 0.01}}) {
+    const int n = repetitions();
+    std::mt19937_64 random(42);
+    for (const bool at_least : {true, false}) {
+      const double p = at_least ? c.theta + c.delta : c.theta - c.delta;
+      std::bernoulli_distribution run(p);
+      int errors = 0;
+      double samples = 0;
+      for (int r = 0; r < n; ++r) {
+        Sprt test(c.theta, c.delta, c.alpha, c.beta);
+        Decision d = Decision::Undecided;
+        while (d == Decision::Undecided) d = test.add(run(random));
+        errors += d != (at_least ? Decision::AtLeast : Decision::Below);
+        samples += static_cast<double>(test.samples());
+      }
+      const double rate = at_least ? c.alpha : c.beta;
+      EXPECT_LE(errors, slack_bound(n, rate)) << "theta " << c.theta << ", p " << p;
+      // Wald's approximation neglects the overshoot of the last step: within 10% on average.
+      EXPECT_NEAR(samples / n, wald_asn(c, p), 0.1 * wald_asn(c, p) + 2)
+          << "theta " << c.theta << ", p " << p;
+    }
+  }
+}
+
+TEST(Sprt, DecidesAtOnceOnCertainBounds) {
+  Sprt everything(1.0, 0.05, 0.05, 0.05);  // p0 clipped to 1: one failure refutes p >= 1
+  EXPECT_EQ(everything.add(false), Decision::Below);
+  EXPECT_EQ(everything.samples(), 1u);
+}
+
+TEST(SequentialInterval, CoversPWhereverItStops) {
+  const int n = repetitions();
+  for (const double p : {0.02, 0.3, 0.5, 0.97}) {
+    std::mt19937_64 random(7);
+    std::bernoulli_distribution run(p);
+    int misses = 0;
+    for (int r = 0; r < n; ++r) {
+      SequentialInterval estimate(0.05, 0.05);
+      while (!estimate.add(run(random))) {
+      }
+      const Interval i = estimate.interval();
+      EXPECT_LE(i.high - i.low, 0.1 + 1e-12);
+      misses += p < i.low || p > i.high;
+    }
+    EXPECT_LE(misses, slack_bound(n, 0.05)) << "p " << p;
+  }
+}
+
+TEST(SequentialInterval, NeedsFewerRunsNearZeroOrOne) {
+  std::mt19937_64 random(9);
+  std::bernoulli_distribution rare(0.01);
+  SequentialInterval estimate(0.01, 0.05);
+  while (!estimate.add(rare(random))) {
+  }
+  EXPECT_LT(estimate.samples(), chernoff_samples(0.01, 0.05) / 2);
+}
+
+TEST(BayesianInterval, PosteriorIntervalsCoverP) {
+  const int n = repetitions();
+  for (const double p : {0.1, 0.5, 0.9}) {
+    std::mt19937_64 random(3);
+    std::bernoulli_distribution run(p);
+    int misses = 0;
+    for (int r = 0; r < n; ++r) {
+      BayesianInterval estimate(0.05, 0.95);
+      while (!estimate.add(run(random))) {
+      }
+      EXPECT_GE(estimate.posterior(), 0.95);
+      misses += p < estimate.interval().low || p > estimate.interval().high;
+    }
+    // Under the uniform prior the coverage is Bayesian; the frequentist misses stay near 5%.
+    EXPECT_LE(misses, slack_bound(n, 0.08)) << "p " << p;
+  }
+}
+
+}  // namespace
+}  // namespace smcbip::smc
