@@ -4,4 +4,6 @@
 
 #include "smc/stats/interval_estimation.h"
 #include "smc/stats/sampling_plans.h"
+#include "smc/check/check.h"
+#include "smc/check/ordered_sampler.h"
 #include "smc/stats/sprt.h"

@@ -293,6 +293,10 @@ std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& 
   return values;
 }
 
+std::vector<Bindings> query_bindings(const PropertyFile& file, const Query& query) {
+  return combinations(parameter_values(file), names_in(query), constant_values(file));
+}
+
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
                         const TimeScale& scale, bipc::Diagnostics& diagnostics, Reading reading) {
   TraceReader reader(in, path);

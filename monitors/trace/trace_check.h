@@ -54,5 +54,8 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
 /// The values of a file's constants, and each parameter's list of values.
 Bindings constant_values(const PropertyFile& file);
 std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& file);
+/// The bindings a query is judged under: the constants, with every combination of the values
+/// of the parameters it names.
+std::vector<Bindings> query_bindings(const PropertyFile& file, const Query& query);
 
 }  // namespace smcbip::monitors

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "bipc/bipc.h"
 #include "monitors/monitors.h"
+#include "smc/tools/model_loading.h"
 
 namespace smcbip::tools {
 namespace {
@@ -96,22 +96,10 @@ void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& 
 /// Resolves the properties' names against the model of --model (errors into `parsed`); false
 /// when the model itself does not load (reported).
 bool names_of_model(const MonitorOptions& options, monitors::ParsedProperties& parsed) {
-  bipc::FrontendOptions frontend;
-  frontend.file = options.model;
-  frontend.root = options.root;
-  frontend.include_dirs = options.include_dirs;
-  const bipc::FrontendResult model = bipc::run_frontend(frontend, /*need_system=*/true);
-  if (model.diags.has_errors() || !model.system) {
-    bipc::Diagnostics sorted = model.diags;
-    sorted.sort_by_location();
-    std::cerr << sorted.format(model.model.files);
-    if (!model.diags.has_errors()) {
-      std::cerr << "smcbip: error: " << options.model
-                << " has no single top compound; name the root with --root\n";
-    }
-    return false;
-  }
-  monitors::resolve_names(parsed.file, *model.system, parsed.diagnostics);
+  const std::optional<bipc::ir::System> system =
+      load_model_system(options.model, options.root, options.include_dirs);
+  if (!system) return false;
+  monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
   return true;
 }
 

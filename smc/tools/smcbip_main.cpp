@@ -1,9 +1,10 @@
-// smcbip: simulate BIP models and judge recorded runs against properties (statistical
-// checking arrives with the smc stage).
+// smcbip: simulate BIP models, judge recorded runs against properties, and check properties
+// statistically.
 //
 // `smcbip simulate` exits with the reference engine's run codes (0 normal end, 1..7 model
-// errors), 64 for usage errors, 65 for bad input, 70 for internal errors. `smcbip monitor`
-// exits with 0 (no property false), 1 (one is), 2 (bad input or usage), 3 (internal error).
+// errors), 64 for usage errors, 65 for bad input, 70 for internal errors. `smcbip monitor` and
+// `smcbip check` exit with 0 (no property false), 1 (one is), 2 (bad input or usage), 3
+// (internal error).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "engines/engines.h"
 #include "engines/options.h"
 #include "engines/plugin.h"
+#include "smc/tools/check_command.h"
 #include "smc/tools/monitor_command.h"
 
 namespace {
@@ -102,8 +104,12 @@ int main(int argc, char** argv) {
     CLI::App* monitor =
         app.add_subcommand("monitor", "judge recorded runs against the queries of a property file");
     tools::register_monitor_options(*monitor, monitor_options);
-    // The exit codes of `monitor` are those of the checking commands, not of runs.
-    judging = argc > 1 && std::string(argv[1]) == "monitor";
+    tools::CheckCommand check_command;
+    CLI::App* check = app.add_subcommand(
+        "check", "answer the queries of a property file by statistical model checking");
+    tools::register_check_options(*check, check_command);
+    // The exit codes of `monitor` and `check` are those of checking, not of runs.
+    judging = argc > 1 && (std::string(argv[1]) == "monitor" || std::string(argv[1]) == "check");
     try {
       app.parse(argc, argv);
       if (simulate->parsed() && frontend.file.empty() && compiled.empty()) {
@@ -116,6 +122,7 @@ int main(int argc, char** argv) {
       return judging ? kJudgingInputError : engines::kUsageError;
     }
     if (monitor->parsed()) return tools::run_monitor(monitor_options);
+    if (check->parsed()) return tools::run_check(check_command);
     if (!compiled.empty()) return run_compiled(frontend, compiled, options);
     return run_simulate(frontend, options);
   } catch (const std::exception& e) {

@@ -1,0 +1,57 @@
+// `smcbip check`'s work: every query of a property file answered from runs of a model, by
+// hypothesis tests (SPRT, single sampling plan) or estimates (PESTIM, sequential confidence
+// interval, Bayesian interval), each run judged by the online monitor.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/engines.h"
+#include "monitors/monitors.h"
+#include "smc/stats/interval_estimation.h"
+
+namespace smcbip::smc {
+
+enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean };
+
+/// How runs the monitor leaves undecided count: as failures, not at all (another run is
+/// drawn), or not at all up to 1% of the runs, beyond which the query fails with an error.
+enum class UndecidedPolicy : std::uint8_t { Fail, Skip, Error };
+
+struct CheckOptions {
+  Method method = Method::Auto;  // Auto: SPRT for hypotheses, PESTIM for estimates
+  double alpha = 0.05, beta = 0.05, delta = 0.01;
+  double confidence = 0.95;  // Bayesian coverage, expectations' intervals
+  std::uint64_t seed = 1;
+  unsigned threads = 1;
+  std::uint64_t max_steps = 1'000'000;  // per run
+  UndecidedPolicy undecided = UndecidedPolicy::Error;
+  engines::EngineKind engine = engines::EngineKind::Optimised;
+};
+
+struct QueryResult {
+  std::size_t query = 0;
+  monitors::Bindings parameters;
+  Method method = Method::Auto;  // the one used
+  double estimate = 0;
+  Interval ci;
+  std::optional<bool> verdict;  // hypotheses
+  std::uint64_t samples = 0, undecided = 0;
+  double seconds = 0;
+  std::string error;  // why the query has no answer (too many undecided runs)
+};
+
+const char* method_name(Method method);
+
+/// Answers every query of `file` (names resolved against `system`) in file order, once per
+/// value of the parameters it names. Runs are numbered from 0 for each query; the same seed
+/// gives the same answers and sample counts for any number of threads. Throws
+/// monitors::MonitorError (bounds) and std::invalid_argument (what the model cannot run).
+std::vector<QueryResult> check_properties(const bipc::ir::System& system,
+                                          const monitors::PropertyFile& file,
+                                          const CheckOptions& options);
+
+}  // namespace smcbip::smc

@@ -1,0 +1,99 @@
+// smc::check_properties on models whose probabilities are known: the race of two exponentials
+// (models/two_exponentials.bip, worked out in its header), and the same answers for any
+// number of threads on the Channel model. Seeds are fixed; each estimate's bound holds with the
+// stated confidence, so a failure is a 1% event at most for a sound method.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "smc/smc.h"
+#include "tests/engines/temp_model.h"
+
+namespace smcbip::smc {
+namespace {
+
+const bipc::ir::System& model(const std::string& file) {
+  static std::map<std::string, std::optional<bipc::ir::System>> loaded;
+  auto [it, fresh] = loaded.try_emplace(file);
+  if (fresh) {
+    it->second = tests::load_model(std::string(SMCBIP_SOURCE_DIR) + "/models/" + file, "System()");
+  }
+  return *it->second;
+}
+
+std::vector<QueryResult> check(const std::string& file, const std::string& queries,
+                               const CheckOptions& options) {
+  monitors::ParsedProperties parsed = monitors::parse_properties(queries, "q.mtl");
+  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  monitors::resolve_names(parsed.file, model(file), parsed.diagnostics);
+  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  return check_properties(model(file), parsed.file, options);
+}
+
+TEST(Check, EstimatesTheRaceOfTwoExponentials) {
+  CheckOptions options;
+  options.delta = 0.02;
+  options.alpha = 0.01;  // PESTIM: 6,623 runs, within 0.02 with probability 0.99
+  options.seed = 11;
+  options.threads = 2;
+  const auto results = check("two_exponentials.bip",
+                             "P=? [ F judge.winner == 1 ]\n"
+                             "P=? [ F[0,5] judge.CLOSED ]\n"
+                             "P>=0.6 [ F judge.winner == 1 ]\n"
+                             "P>=0.75 [ F judge.winner == 1 ]\n",
+                             options);
+  ASSERT_EQ(results.size(), 4u);
+  EXPECT_EQ(results[0].samples, chernoff_samples(0.02, 0.01));
+  EXPECT_NEAR(results[0].estimate, 2.0 / 3.0, 0.02);
+  // The first firing is exponential of rate 1/10 + 1/20 per ms.
+  EXPECT_NEAR(results[1].estimate, 1 - std::exp(-5 * (0.1 + 0.05)), 0.02);
+  EXPECT_EQ(results[2].method, Method::Sprt);
+  EXPECT_EQ(results[2].verdict, std::optional<bool>(true));
+  EXPECT_EQ(results[3].verdict, std::optional<bool>(false));
+  for (const QueryResult& r : results) EXPECT_EQ(r.undecided, 0u);
+}
+
+TEST(Check, ThreadCountsGiveTheSameAnswers) {
+  const std::string queries =
+      "P>=0.3 [ F[0,100] Channel.lost > 0 ]\n"
+      "P=? [ F[0,100] Channel.lost > 0 ]\n"
+      "E[<=500; 50](max: Sender.sent)\n";
+  for (const Method method : {Method::Sprt, Method::Ci, Method::Bayes}) {
+    CheckOptions options;
+    options.method = method;
+    options.delta = 0.03;
+    options.seed = 5;
+    options.threads = 1;
+    const auto one = check("channel.bip", queries, options);
+    for (const unsigned threads : {2u, 3u}) {
+      options.threads = threads;
+      const auto more = check("channel.bip", queries, options);
+      ASSERT_EQ(more.size(), one.size());
+      for (std::size_t i = 0; i < one.size(); ++i) {
+        EXPECT_EQ(more[i].samples, one[i].samples) << method_name(method) << " " << threads;
+        EXPECT_EQ(more[i].estimate, one[i].estimate);
+        EXPECT_EQ(more[i].verdict, one[i].verdict);
+      }
+    }
+  }
+}
+
+TEST(Check, RunsLeftUndecidedAreCountedAndReported) {
+  // G over an unbounded time on runs cut after 20 steps: undecided unless a loss came first.
+  CheckOptions options;
+  options.max_steps = 20;
+  options.threads = 1;
+  const auto errors = check("channel.bip", "P=? [ G Channel.lost == 0 ]\n", options);
+  EXPECT_FALSE(errors.at(0).error.empty());
+  options.undecided = UndecidedPolicy::Fail;
+  options.delta = 0.1;
+  const auto failed = check("channel.bip", "P=? [ G Channel.lost == 0 ]\n", options);
+  EXPECT_TRUE(failed.at(0).error.empty());
+  EXPECT_EQ(failed.at(0).estimate, 0.0);
+  EXPECT_GT(failed.at(0).undecided, failed.at(0).samples / 2);  // counted, as failures
+}
+
+}  // namespace
+}  // namespace smcbip::smc
