@@ -31,6 +31,7 @@ demo: build
 	$(BUILD_DIR)/bin/smcbip simulate models/families/rendezvous_10.bip --root 'Top()' --seed 1 --limit 5
 	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 8
 	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 2 --trace jsonl
+	$(BUILD_DIR)/bin/smcbip check models/channel.bip models/channel.mtl --root 'System()' --delta 0.02
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -LE slow -j2
