@@ -205,6 +205,7 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::race(bool& fa
     planner_.replan_within_windows(runtime_, dates_);
     best = earliest_in_window();
   }
+  if (best) planner_.fired(runtime_, runtime_.items()[best->first]);
   return best;
 }
 

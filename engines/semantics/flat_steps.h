@@ -154,13 +154,15 @@ class FlatSteps final : public CompiledSteps {
     const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
     const auto date = [&](std::size_t i) { return items_[i].date; };
     choice = earliest_in_window(items_.size(), window, date, *random_);
-    if (choice) return true;
-    for (Listed& item : items_) {
-      if (t_.stochastic[item.position]) continue;
-      item.date = planner_->draw_timed(raw_[item.position].urgency, item.window);
-      plans_[item.position].date = item.date;
+    if (!choice) {
+      for (Listed& item : items_) {
+        if (t_.stochastic[item.position]) continue;
+        item.date = planner_->draw_timed(raw_[item.position].urgency, item.window);
+        plans_[item.position].date = item.date;
+      }
+      choice = earliest_in_window(items_.size(), window, date, *random_);
     }
-    choice = earliest_in_window(items_.size(), window, date, *random_);
+    if (choice) DatePlanner::fired(plans_[items_[choice->first].position]);
     return true;
   }
 

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "smc/smc.h"
@@ -53,6 +55,56 @@ TEST(Check, EstimatesTheRaceOfTwoExponentials) {
   EXPECT_EQ(results[2].verdict, std::optional<bool>(true));
   EXPECT_EQ(results[3].verdict, std::optional<bool>(false));
   for (const QueryResult& r : results) EXPECT_EQ(r.undecided, 0u);
+}
+
+TEST(Check, EstimatesKnuthAndYaosDie) {
+  // Each face has probability 1/6 (models/knuth_yao.bip): a fair coin is a race of two
+  // exponentials, fair only if the flip that fired draws a new date for the next flip.
+  CheckOptions options;
+  options.delta = 0.02;
+  options.alpha = 0.01;
+  options.seed = 3;
+  options.threads = 2;
+  const auto results =
+      check("knuth_yao.bip", "param k = {1, 2, 3, 4, 5, 6}\nP=? [ F (die.s == 7 && die.d == k) ]\n",
+            options);
+  ASSERT_EQ(results.size(), 6u);
+  for (const QueryResult& r : results) {
+    EXPECT_NEAR(r.estimate, 1.0 / 6.0, 0.02) << "face " << r.parameters.at("k");
+    EXPECT_EQ(r.undecided, 0u);
+  }
+}
+
+/// The dates of a run's steps.
+class Dates final : public engines::RunObserver {
+ public:
+  bool observe(const engines::StepInfo& step, const engines::StateView&) override {
+    dates.push_back(step.time);
+    return true;
+  }
+  std::vector<engines::TimeValue> dates;
+};
+
+TEST(Check, AFiredStochasticPortDrawsANewDate) {
+  // The die's flips are self-loops of the same ports: each flip must come at a later date than
+  // the one before (the dates are continuous), on the interpreter and the compiled step path.
+  for (const engines::EngineKind engine :
+       {engines::EngineKind::Reference, engines::EngineKind::Optimised}) {
+    engines::SimulateOptions options;
+    options.engine = engine;
+    options.seed = 1;
+    options.silent = true;
+    engines::Simulator simulator(model("knuth_yao.bip"), options,
+                                 engines::Externs::with_builtins());
+    std::ostringstream sink;
+    for (std::uint64_t run = 0; run < 50; ++run) {
+      Dates dates;
+      simulator.run(run, engines::RunStreams{sink, sink}, &dates);
+      for (std::size_t i = 2; i < dates.dates.size(); ++i) {
+        EXPECT_LT(dates.dates[i - 1], dates.dates[i]) << "run " << run << ", step " << i;
+      }
+    }
+  }
 }
 
 TEST(Check, ThreadCountsGiveTheSameAnswers) {
