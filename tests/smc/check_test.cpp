@@ -75,6 +75,23 @@ TEST(Check, EstimatesKnuthAndYaosDie) {
   }
 }
 
+TEST(Check, EstimatesTheTandemQueueAsPrismDoes) {
+  // models/tandem.bip is PRISM's and Ymer's tandem.sm (c = 7); PRISM computes 0.0999 for both
+  // queues full within 26 time units. The sequential interval covers it with probability 0.99.
+  CheckOptions options;
+  options.method = Method::Ci;
+  options.delta = 0.01;
+  options.alpha = 0.01;
+  options.seed = 17;
+  options.threads = 2;
+  const auto results =
+      check("tandem.bip", "P=? [ F[0,26] (serverC.sc == 7 && serverM.sm == 7) ]\n", options);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_LE(results[0].ci.low, 0.0999);
+  EXPECT_GE(results[0].ci.high, 0.0999);
+  EXPECT_LE(results[0].ci.high - results[0].ci.low, 0.02);
+}
+
 /// The dates of a run's steps.
 class Dates final : public engines::RunObserver {
  public:
