@@ -8,7 +8,7 @@ ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines monitors smc tests bench
 PREFIX ?= /usr/local
 
-.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor format clean
+.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check format clean
 
 all: build
 
@@ -66,6 +66,10 @@ bench-engines: build
 # Steps per second of generated against interpreted models (reports, never fails on timings).
 bench-generated: build
 	bench/generated_steps.sh $(BUILD_DIR)
+
+# Runs per second of smcbip check on one thread and on all cores (reports, never fails).
+bench-check: build
+	bench/check_runs.sh $(BUILD_DIR)
 
 # The online monitor's events per second and memory on million-event traces.
 bench-monitor: build

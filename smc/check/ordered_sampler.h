@@ -39,41 +39,61 @@ class OrderedSampler {
     std::vector<std::thread> workers;
     for (unsigned w = 0; w < threads_; ++w) workers.emplace_back([this, w] { work(w); });
     std::uint64_t i = first;
+    std::vector<Slot> taken;
     for (;;) {
-      std::unique_lock lock(mutex_);
-      arrived_.wait(lock, [&] { return ready_.contains(i); });
-      Slot slot = std::move(ready_.at(i));
-      ready_.erase(i);
-      consumed_ = ++i;
-      lock.unlock();
+      {
+        // Every outcome ready from i on, in one visit.
+        std::unique_lock lock(mutex_);
+        arrived_.wait(lock, [&] { return ready_.contains(i); });
+        taken.clear();
+        for (auto it = ready_.find(i); it != ready_.end() && it->first == i + taken.size();) {
+          taken.push_back(std::move(it->second));
+          it = ready_.erase(it);
+        }
+        consumed_ = i + taken.size();
+      }
       room_.notify_all();
-      if (slot.error || !consume(slot.outcome)) {
-        stop(workers);
-        if (slot.error) std::rethrow_exception(slot.error);
-        return i;
+      for (Slot& slot : taken) {
+        ++i;
+        if (slot.error || !consume(slot.outcome)) {
+          stop(workers);
+          if (slot.error) std::rethrow_exception(slot.error);
+          return i;
+        }
       }
     }
   }
 
  private:
+  // Runs are claimed and handed over in batches: one lock per batch, not per run (short runs
+  // would otherwise spend their time waiting for the lock).
+  static constexpr std::uint64_t kBatch = 16;
+
   void work(unsigned worker) {
+    std::vector<Slot> made;
     for (;;) {
-      std::uint64_t index;
+      std::uint64_t first;
       {
         std::unique_lock lock(mutex_);
         room_.wait(lock, [&] { return stop_ || next_ < consumed_ + ahead_; });
         if (stop_) return;
-        index = next_++;
+        first = next_;
+        next_ += kBatch;
       }
-      Slot slot;
-      try {
-        slot.outcome = produce_(worker, index);
-      } catch (...) {
-        slot.error = std::current_exception();  // rethrown when its turn comes
+      made.assign(kBatch, Slot{});
+      for (std::uint64_t k = 0; k < kBatch; ++k) {
+        try {
+          made[k].outcome = produce_(worker, first + k);
+        } catch (...) {
+          made[k].error = std::current_exception();  // rethrown when its turn comes
+          made.resize(k + 1);
+          break;
+        }
       }
       {
         std::lock_guard lock(mutex_);
-        ready_.emplace(index, std::move(slot));
+        for (std::uint64_t k = 0; k < made.size(); ++k)
+          ready_.emplace(first + k, std::move(made[k]));
       }
       arrived_.notify_one();
     }
