@@ -3,6 +3,7 @@
 #pragma once
 
 #include "monitors/online/critical_bound.h"
+#include "monitors/online/extremum.h"
 #include "monitors/online/horizon.h"
 #include "monitors/online/online_monitor.h"
 #include "monitors/parse/property_parser.h"

@@ -81,8 +81,8 @@ class DatePlanner {
 
   /// The item chosen by the last race fires: its date is used up, so it draws afresh when it
   /// is offered again (a self-loop does not fire again at the same date).
-  void fired(const Runtime& runtime, const Item& item) { plan_of(runtime, item).seen = 0; }
   static void fired(Plan& plan) { plan.seen = 0; }
+  void fired(const Runtime& runtime, const Item& item) { fired(plan_of(runtime, item)); }
 
   /// A new date for an item offered `offered`, as plan() draws one: from the @stochastic
   /// annotation of the atom port `stochastic` when the item fires one, from its urgency and

@@ -368,7 +368,11 @@ Verdict OnlineMonitor::end(RunEnd how) {
   } else {
     // Kleene's value: true if true whatever follows reads, false if false whatever it reads.
     Pos sure_hit, possible_hit;
+    auto nodes = clone_all(nodes_);
+    online::Signals signals = signals_;
     const Verdict sure = finish_cut(false, sure_hit);
+    nodes_ = std::move(nodes);  // the run as it was cut, for the second reading
+    signals_ = std::move(signals);
     const Verdict maybe = finish_cut(true, possible_hit);
     decide(sure == Verdict::True     ? Verdict::True
            : maybe == Verdict::False ? Verdict::False
@@ -380,8 +384,6 @@ Verdict OnlineMonitor::end(RunEnd how) {
 }
 
 Verdict OnlineMonitor::finish_cut(bool unknown, Pos& hit) {
-  auto nodes = clone_all(nodes_);
-  online::Signals signals = signals_;
   for (const Leaf& leaf : leaves_) signals_.of[leaf.node].emit(kForever, unknown);
   signals_.segments.push(online::after(last_));
   signals_.segments.finish(/*unknown=*/true);
@@ -391,8 +393,6 @@ Verdict OnlineMonitor::finish_cut(bool unknown, Pos& hit) {
                           : run->value   ? Verdict::True
                                          : Verdict::False;
   hit = nodes_[root_]->first_hit();
-  nodes_ = std::move(nodes);
-  signals_ = std::move(signals);
   return verdict;
 }
 

@@ -118,7 +118,7 @@ class OnlineMonitor {
   const online::Run* root_run();
   /// The verdict of a run cut short after the last step when what follows reads `unknown`
   /// at every leaf (false: what holds for sure; true: what may hold), and the root's first
-  /// hit then; the state is kept.
+  /// hit then. It finishes the run in the monitor's state.
   Verdict finish_cut(bool unknown, online::Pos& hit);
   void decide(Verdict verdict);
   /// The observation ended with `end`, its last position: the verdict is then known.

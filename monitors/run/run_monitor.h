@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engines/run_observer.h"
+#include "monitors/online/extremum.h"
 #include "monitors/online/online_monitor.h"
 
 namespace smcbip::monitors {
@@ -40,6 +41,25 @@ class RunMonitor final : public engines::RunObserver {
 
  private:
   OnlineMonitor monitor_;
+};
+
+/// The observed value of an expectation query on runs of its model: an observer that stops
+/// the run past the query's run bound; reset() before each run.
+class RunExtremum final : public engines::RunObserver {
+ public:
+  /// `scale` as for RunMonitor.
+  RunExtremum(const Query& q, const TimeScale& scale, const Bindings& bindings)
+      : extremum_(q, scale, bindings) {}
+
+  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
+    return extremum_.step(EngineState(step, state), step.time,
+                          static_cast<std::int64_t>(step.step));
+  }
+  std::optional<double> value() const { return extremum_.value(); }
+  void reset() { extremum_.reset(); }
+
+ private:
+  Extremum extremum_;
 };
 
 }  // namespace smcbip::monitors

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "monitors/online/critical_bound.h"
+#include "monitors/online/extremum.h"
 
 namespace smcbip::monitors {
 namespace {
@@ -217,30 +218,6 @@ std::vector<Bindings> combinations(const std::map<std::string, std::vector<doubl
   }
   return all;
 }
-
-/// The maximum or minimum of an expression over the states a run observes up to a time.
-class Extremum {
- public:
-  Extremum(const Query& q, const TimeScale& scale, const Bindings& bindings)
-      : expr_(*q.observed), maximum_(q.maximum), bindings_(bindings) {
-    if (q.run.kind == Bound::Kind::Time) until_ = bound_ticks(q.run.high, scale, bindings);
-    if (q.run.kind == Bound::Kind::Steps) steps_ = bound_steps(q.run.high, bindings);
-  }
-  void step(const StateView& state, online::Tick time, std::int64_t index) {
-    if (time > until_ || index > steps_) return;
-    const double v = evaluate(expr_, state, bindings_);
-    if (!value_ || (maximum_ ? v > *value_ : v < *value_)) value_ = v;
-  }
-  std::optional<double> value() const { return value_; }
-
- private:
-  const Expr& expr_;
-  bool maximum_;
-  Bindings bindings_;
-  online::Tick until_ = std::numeric_limits<online::Tick>::max();
-  std::int64_t steps_ = std::numeric_limits<std::int64_t>::max();
-  std::optional<double> value_;
-};
 
 /// What judges one query for one value of its parameters.
 struct Judge {

@@ -33,36 +33,6 @@ struct Outcome {
   double value = 0;
 };
 
-/// The maximum or minimum of an expression over the states of a run up to its bound.
-class Extremum final : public engines::RunObserver {
- public:
-  Extremum(const monitors::Query& q, const monitors::Bindings& bindings)
-      : expr_(*q.observed), maximum_(q.maximum), bindings_(bindings) {
-    if (q.run.kind == monitors::Bound::Kind::Time) {
-      until_ = monitors::bound_ticks(q.run.high, kNanoseconds, bindings);
-    }
-    if (q.run.kind == monitors::Bound::Kind::Steps) {
-      steps_ = monitors::bound_steps(q.run.high, bindings);
-    }
-  }
-  void reset() { value_.reset(); }
-  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
-    if (step.time > until_ || static_cast<std::int64_t>(step.step) > steps_) return false;
-    const double v = monitors::evaluate(expr_, monitors::EngineState(step, state), bindings_);
-    if (!value_ || (maximum_ ? v > *value_ : v < *value_)) value_ = v;
-    return true;
-  }
-  double value() const { return value_.value_or(std::numeric_limits<double>::quiet_NaN()); }
-
- private:
-  const monitors::Expr& expr_;
-  bool maximum_;
-  monitors::Bindings bindings_;
-  std::int64_t until_ = std::numeric_limits<std::int64_t>::max();
-  std::int64_t steps_ = std::numeric_limits<std::int64_t>::max();
-  std::optional<double> value_;
-};
-
 /// What one thread needs to make runs of one query: its simulator and its observer.
 class Worker {
  public:
@@ -73,7 +43,7 @@ class Worker {
     if (q.formula) {
       monitor_ = std::make_unique<monitors::RunMonitor>(*q.formula, kNanoseconds, bindings, q.run);
     } else {
-      extremum_ = std::make_unique<Extremum>(q, bindings);
+      extremum_ = std::make_unique<monitors::RunExtremum>(q, kNanoseconds, bindings);
     }
   }
 
@@ -86,7 +56,7 @@ class Worker {
     }
     extremum_->reset();
     simulator_.run(index, streams, extremum_.get());
-    return {Verdict::True, extremum_->value()};
+    return {Verdict::True, extremum_->value().value_or(std::numeric_limits<double>::quiet_NaN())};
   }
 
  private:
@@ -94,7 +64,7 @@ class Worker {
   NullBuffer nothing_;
   std::ostream sink_;
   std::unique_ptr<monitors::RunMonitor> monitor_;
-  std::unique_ptr<Extremum> extremum_;
+  std::unique_ptr<monitors::RunExtremum> extremum_;
 };
 
 bool holds_at_least(monitors::Comparison c) {
@@ -128,8 +98,10 @@ Method method_for(const monitors::Query& q, Method asked) {
 /// Consumes the outcomes of one query's runs in index order and keeps its answer.
 class Answer {
  public:
-  Answer(const monitors::Query& q, const CheckOptions& options, double theta, QueryResult& r)
-      : q_(q), options_(options), theta_(theta), r_(r) {}
+  /// `theta`: a hypothesis' threshold; `runs`: an expectation's number of runs.
+  Answer(const monitors::Query& q, const CheckOptions& options, double theta, std::uint64_t runs,
+         QueryResult& r)
+      : q_(q), options_(options), theta_(theta), runs_(runs), r_(r) {}
 
   /// Takes one run's outcome; false once the answer is known.
   bool take(const Outcome& outcome) {
@@ -219,13 +191,10 @@ class Answer {
     return n == 0 ? 0.0 : static_cast<double>(x) / static_cast<double>(n);
   }
 
- public:
-  std::uint64_t runs_ = 0;  // expectations: the number of runs
-
- private:
   const monitors::Query& q_;
   const CheckOptions& options_;
   double theta_;
+  std::uint64_t runs_;
   QueryResult& r_;
   std::optional<Sprt> sprt_;
   std::optional<SamplingPlan> plan_;
@@ -258,12 +227,11 @@ QueryResult answer(const bipc::ir::System& system, const monitors::Query& q,
   for (unsigned w = 0; w < threads; ++w) {
     workers.push_back(std::make_unique<Worker>(system, simulate, q, bindings));
   }
-  const double theta =
-      q.kind == monitors::Query::Kind::Hypothesis ? value_of(q.threshold, bindings) : 0;
-  Answer a(q, options, theta, r);
-  if (q.kind == monitors::Query::Kind::Expectation) {
-    a.runs_ = static_cast<std::uint64_t>(value_of(q.runs, bindings));
-  }
+  using K = monitors::Query::Kind;
+  const double theta = q.kind == K::Hypothesis ? value_of(q.threshold, bindings) : 0;
+  const auto runs =
+      q.kind == K::Expectation ? static_cast<std::uint64_t>(value_of(q.runs, bindings)) : 0;
+  Answer a(q, options, theta, runs, r);
   OrderedSampler<Outcome> sampler(
       threads, [&](unsigned w, std::uint64_t index) { return workers[w]->run(index); });
   sampler.run(0, [&](const Outcome& o) { return a.take(o); });

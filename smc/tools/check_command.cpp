@@ -80,10 +80,10 @@ void print_json(const monitors::PropertyFile& file, const std::vector<smc::Query
 
 void register_check_options(CLI::App& command, CheckCommand& check) {
   smc::CheckOptions& o = check.options;
-  command.add_option("MODEL", check.model, "the BIP model")->required();
+  command.add_option("MODEL", check.model.file, "the BIP model")->required();
   command.add_option("PROP", check.properties, "the property file (.mtl or .ltl)")->required();
-  command.add_option("--root", check.root, "the model's root compound");
-  command.add_option("-I", check.include_dirs, "a folder of packages the model uses");
+  command.add_option("--root", check.model.root, "the model's root compound");
+  command.add_option("-I", check.model.include_dirs, "a folder of packages the model uses");
   command.add_option("--method", check.method, "sprt or ssp (hypotheses), pestim, ci or bayes")
       ->check(CLI::IsMember({"auto", "sprt", "ssp", "pestim", "ci", "bayes"}))
       ->capture_default_str();
@@ -119,8 +119,8 @@ void register_check_options(CLI::App& command, CheckCommand& check) {
 int run_check(CheckCommand check) {
   check.options.method = kMethods.at(check.method);
   check.options.undecided = kPolicies.at(check.undecided);
-  const std::optional<bipc::ir::System> system =
-      load_model_system(check.model, check.root, check.include_dirs);
+  LoadFailure failure{};
+  const std::optional<bipc::ir::System> system = load_model_system(check.model, failure);
   if (!system) return kInputError;
   monitors::ParsedProperties parsed = monitors::load_properties(check.properties);
   if (parsed.ok()) monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
@@ -136,7 +136,7 @@ int run_check(CheckCommand check) {
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "smcbip: error: " << check.model << ": " << e.what() << "\n";
+    std::cerr << "smcbip: error: " << check.model.file << ": " << e.what() << "\n";
     return kInputError;
   }
   if (check.json) {

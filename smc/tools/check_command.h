@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "bipc/bipc.h"
 #include "smc/check/check.h"
 
 namespace smcbip::tools {
 
 struct CheckCommand {
-  std::string model, properties, root;
-  std::vector<std::string> include_dirs;
+  bipc::FrontendOptions model;
+  std::string properties;
   std::string method = "auto", undecided = "error";
   bool json = false;
   smc::CheckOptions options;

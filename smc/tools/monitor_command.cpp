@@ -96,8 +96,8 @@ void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& 
 /// Resolves the properties' names against the model of --model (errors into `parsed`); false
 /// when the model itself does not load (reported).
 bool names_of_model(const MonitorOptions& options, monitors::ParsedProperties& parsed) {
-  const std::optional<bipc::ir::System> system =
-      load_model_system(options.model, options.root, options.include_dirs);
+  LoadFailure failure{};
+  const std::optional<bipc::ir::System> system = load_model_system(options.model, failure);
   if (!system) return false;
   monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
   return true;
@@ -118,15 +118,15 @@ void register_monitor_options(CLI::App& command, MonitorOptions& options) {
                   "the unit of the traces' times and of bounds written without one")
       ->check(CLI::IsMember({"s", "ms", "us", "ns"}))
       ->capture_default_str();
-  command.add_option("--model", options.model,
+  command.add_option("--model", options.model.file,
                      "the model the runs come from: the properties' names must be its own");
-  command.add_option("--root", options.root, "the model's root compound (with --model)");
-  command.add_option("-I", options.include_dirs, "a folder of packages the model uses");
+  command.add_option("--root", options.model.root, "the model's root compound (with --model)");
+  command.add_option("-I", options.model.include_dirs, "a folder of packages the model uses");
 }
 
 int run_monitor(const MonitorOptions& options) {
   monitors::ParsedProperties parsed = monitors::load_properties(options.properties);
-  if (parsed.ok() && !options.model.empty() && !names_of_model(options, parsed)) {
+  if (parsed.ok() && !options.model.file.empty() && !names_of_model(options, parsed)) {
     return kInputError;
   }
   if (!parsed.ok()) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "bipc/bipc.h"
+
 namespace smcbip::tools {
 
 struct MonitorOptions {
@@ -15,8 +17,7 @@ struct MonitorOptions {
   bool pointwise = false;
   std::string time_unit = "ms";
   // A model whose names the properties must use (checked before the traces are read).
-  std::string model, root;
-  std::vector<std::string> include_dirs;
+  bipc::FrontendOptions model;
 };
 
 /// Adds the options of `smcbip monitor` to its subcommand.

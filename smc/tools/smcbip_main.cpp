@@ -9,13 +9,13 @@
 #include <exception>
 #include <iostream>
 
-#include "bipc/bipc.h"
 #include "bipc/ir/model_hash.h"
 #include "bipc/options.h"
 #include "engines/engines.h"
 #include "engines/options.h"
 #include "engines/plugin.h"
 #include "smc/tools/check_command.h"
+#include "smc/tools/model_loading.h"
 #include "smc/tools/monitor_command.h"
 
 namespace {
@@ -24,19 +24,10 @@ using namespace smcbip;
 
 /// The system of the model file, or nullopt (diagnostics printed, `code` set).
 std::optional<bipc::ir::System> load_system(const bipc::FrontendOptions& frontend, int& code) {
-  bipc::FrontendResult result = bipc::run_frontend(frontend, /*need_system=*/true);
-  bipc::Diagnostics sorted = result.diags;
-  sorted.sort_by_location();
-  std::cerr << sorted.format(result.model.files);
-  code = engines::kInputError;
-  if (result.diags.has_errors()) return std::nullopt;
-  if (!result.system) {
-    std::cerr << "smcbip: error: no root given and the model has no single top compound; use "
-                 "--root\n";
-    code = engines::kUsageError;
-    return std::nullopt;
-  }
-  return std::move(result.system);
+  tools::LoadFailure failure{};
+  std::optional<bipc::ir::System> system = tools::load_model_system(frontend, failure);
+  code = failure == tools::LoadFailure::NoRoot ? engines::kUsageError : engines::kInputError;
+  return system;
 }
 
 /// Runs the compiled model of `plugin_path`; with a model file, only when it is that model.
