@@ -32,6 +32,8 @@ demo: build
 	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 8
 	$(BUILD_DIR)/bin/smcbip simulate models/channel.bip --root 'System()' --seed 1 --limit 2 --trace jsonl
 	$(BUILD_DIR)/bin/smcbip check models/channel.bip models/channel.mtl --root 'System()' --delta 0.02
+	$(BUILD_DIR)/bin/smcbip explore models/channel.bip models/channel_sweep.mtl --root 'System()' --delta 0.02 --plot $(BUILD_DIR)/channel_sweep.svg --csv $(BUILD_DIR)/channel_sweep.csv || [ $$? -eq 1 ]
+	@echo "The sweep's plot is in $(BUILD_DIR)/channel_sweep.svg"
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -LE slow -j2

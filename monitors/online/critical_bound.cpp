@@ -35,8 +35,8 @@ bool has_critical_bound(const Formula& formula, const std::string& parameter) {
 }
 
 CriticalBound::CriticalBound(const Formula& formula, const std::string& parameter, double largest,
-                             const TimeScale& scale, const Bindings& bindings)
-    : monitor_(formula, scale, with(bindings, parameter, largest)),
+                             const TimeScale& scale, const Bindings& bindings, const Bound& run)
+    : monitor_(formula, scale, with(bindings, parameter, largest), run),
       finally_(formula.kind == Formula::Kind::Finally),
       bound_(formula.bound.high),
       scale_(scale) {}

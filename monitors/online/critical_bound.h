@@ -18,8 +18,9 @@ bool has_critical_bound(const Formula& formula, const std::string& parameter);
 /// deciding it (for sure, and possibly, which differ on runs cut short).
 class CriticalBound {
  public:
+  /// `run`: the query's run bound, which must not name the parameter.
   CriticalBound(const Formula& formula, const std::string& parameter, double largest,
-                const TimeScale& scale, const Bindings& bindings);
+                const TimeScale& scale, const Bindings& bindings, const Bound& run = {});
 
   /// Reads the next step; true once every value is judged.
   bool step(const StateView& state, online::Tick time) {

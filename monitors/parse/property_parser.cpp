@@ -9,9 +9,11 @@
 //   unary -   primaries. An atomic predicate is whatever the comparison level reads.
 #include "monitors/parse/property_parser.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "monitors/parse/property_checks.h"
@@ -572,19 +574,62 @@ class Parser {
   int depth_ = 0;
 };
 
+/// Reads `NAME=values` as the declaration `param NAME=values`.
+std::optional<Declaration> given_parameter(const std::string& text, std::uint32_t source,
+                                           bipc::Diagnostics& diagnostics) {
+  std::vector<Token> tokens = detail::lex_properties(text, source, diagnostics);
+  Token keyword;
+  keyword.kind = TokenKind::Name;
+  keyword.text = "param";
+  keyword.at = tokens.front().at;
+  tokens.insert(tokens.begin(), keyword);
+  const std::size_t errors = diagnostics.error_count();
+  PropertyFile given = Parser(std::move(tokens), diagnostics).file();
+  if (diagnostics.error_count() != errors) return std::nullopt;
+  if (given.declarations.size() != 1 || !given.queries.empty()) {
+    diagnostics.error({source, 1, 1},
+                      "expected one parameter: NAME=start:stop:step or NAME={v1,...}");
+    return std::nullopt;
+  }
+  return std::move(given.declarations.front());
+}
+
+/// Gives the file the parameters of the command line: each replaces the file's declaration of
+/// its name (keeping its place, so that uses before it stay errors) or comes before the file.
+void give_parameters(const std::vector<std::string>& parameters, ParsedProperties& parsed) {
+  std::vector<Declaration>& declarations = parsed.file.declarations;
+  for (const std::string& text : parameters) {
+    const std::uint32_t source = parsed.sources.add("--param");
+    std::optional<Declaration> given = given_parameter(text, source, parsed.diagnostics);
+    if (!given) continue;
+    const auto same = std::find_if(declarations.begin(), declarations.end(),
+                                   [&](const Declaration& d) { return d.name == given->name; });
+    if (same == declarations.end()) {
+      given->at = {source, 0, 0};
+      declarations.insert(declarations.begin(), std::move(*given));
+    } else {
+      given->at = same->at;
+      *same = std::move(*given);
+    }
+  }
+}
+
 }  // namespace
 
-ParsedProperties parse_properties(std::string_view text, const std::string& path) {
+ParsedProperties parse_properties(std::string_view text, const std::string& path,
+                                  const std::vector<std::string>& parameters) {
   ParsedProperties parsed;
   const std::uint32_t file = parsed.sources.add(path);
   std::vector<Token> tokens = detail::lex_properties(text, file, parsed.diagnostics);
   parsed.file = Parser(std::move(tokens), parsed.diagnostics).file();
+  if (parsed.ok()) give_parameters(parameters, parsed);
   if (parsed.ok()) detail::check_properties(parsed.file, parsed.diagnostics);
   parsed.diagnostics.sort_by_location();
   return parsed;
 }
 
-ParsedProperties load_properties(const std::string& path) {
+ParsedProperties load_properties(const std::string& path,
+                                 const std::vector<std::string>& parameters) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     ParsedProperties parsed;
@@ -592,7 +637,7 @@ ParsedProperties load_properties(const std::string& path) {
     return parsed;
   }
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parse_properties(text, path);
+  return parse_properties(text, path, parameters);
 }
 
 }  // namespace smcbip::monitors

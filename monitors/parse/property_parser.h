@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "bipc/diagnostics.h"
 #include "monitors/property/ast.h"
@@ -24,9 +25,14 @@ struct ParsedProperties {
 /// checks what needs no model: constants and parameters declared once and before use in bounds,
 /// thresholds and run counts; thresholds in [0, 1]; step bounds and run counts whole numbers;
 /// interval bounds in order. Names inside atomic predicates are resolved against a model later.
-ParsedProperties parse_properties(std::string_view text, const std::string& path);
+/// `parameters` are parameters given on the command line, `NAME=start:stop:step` or
+/// `NAME={v1,v2,...}`: each replaces the file's declaration of NAME, or declares it before the
+/// file's first line; their errors are reported in a source named `--param`.
+ParsedProperties parse_properties(std::string_view text, const std::string& path,
+                                  const std::vector<std::string>& parameters = {});
 
 /// Reads the file at `path` and parses it; a file that cannot be read is an error at 0:0.
-ParsedProperties load_properties(const std::string& path);
+ParsedProperties load_properties(const std::string& path,
+                                 const std::vector<std::string>& parameters = {});
 
 }  // namespace smcbip::monitors

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engines/run_observer.h"
+#include "monitors/online/critical_bound.h"
 #include "monitors/online/extremum.h"
 #include "monitors/online/online_monitor.h"
 
@@ -41,6 +42,30 @@ class RunMonitor final : public engines::RunObserver {
 
  private:
   OnlineMonitor monitor_;
+};
+
+/// Judges runs against F[0,t] phi or G[0,t] phi for every value of the parameter t at once
+/// (CriticalBound); reset() before each run.
+class RunCriticalBound final : public engines::RunObserver {
+ public:
+  /// `scale` as for RunMonitor; `largest`: the parameter's largest value.
+  RunCriticalBound(const Formula& formula, const std::string& parameter, double largest,
+                   const TimeScale& scale, const Bindings& bindings, const Bound& run = {})
+      : bound_(formula, parameter, largest, scale, bindings, run) {}
+
+  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
+    return !bound_.step(EngineState(step, state), step.time);
+  }
+  void finish(engines::RunEnd end, int, const std::string&) override {
+    bound_.end(end == engines::RunEnd::Deadlock ? RunEnd::Deadlock : RunEnd::Cut);
+  }
+
+  /// The verdict for `value` of the parameter, once the run is over.
+  Verdict verdict(double value) const { return bound_.verdict(value); }
+  void reset() { bound_.reset(); }
+
+ private:
+  CriticalBound bound_;
 };
 
 /// The observed value of an expectation query on runs of its model: an observer that stops

@@ -15,7 +15,9 @@
 
 namespace smcbip::smc {
 
-enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean };
+/// Band: PESTIM's runs judged for every value of a monotone parameter at once, with DKW's
+/// simultaneous band (explore).
+enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band };
 
 /// How runs the monitor leaves undecided count: as failures, not at all (another run is
 /// drawn), or not at all up to 1% of the runs, beyond which the query fails with an error.
@@ -41,6 +43,10 @@ struct QueryResult {
   std::optional<bool> verdict;  // hypotheses
   std::uint64_t samples = 0, undecided = 0;
   double seconds = 0;
+  /// What the point was judged at: its α (for a band, the whole band's α) and the number of
+  /// points of its sweep that α was split over (1: not split).
+  double alpha = 0;
+  std::size_t split = 1;
   std::string error;  // why the query has no answer (too many undecided runs)
 };
 
@@ -53,5 +59,14 @@ const char* method_name(Method method);
 std::vector<QueryResult> check_properties(const bipc::ir::System& system,
                                           const monitors::PropertyFile& file,
                                           const CheckOptions& options);
+
+/// Answers every query as check_properties does, but with a guarantee for each query's whole
+/// sweep at once rather than point by point. F[0,t] phi and G[0,t] phi over one parameter t
+/// (and the Auto method) are judged for every t from one set of runs, each estimate within
+/// DKW's simultaneous band; any other sweep splits α (and β, and 1 - confidence) evenly over
+/// its points. The points of a query always share their runs.
+std::vector<QueryResult> explore_properties(const bipc::ir::System& system,
+                                            const monitors::PropertyFile& file,
+                                            const CheckOptions& options);
 
 }  // namespace smcbip::smc

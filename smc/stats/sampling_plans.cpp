@@ -48,4 +48,8 @@ std::uint64_t chernoff_samples(double delta, double alpha) {
   return static_cast<std::uint64_t>(std::ceil(std::log(2.0 / alpha) / (2.0 * delta * delta)));
 }
 
+double dkw_half_width(std::uint64_t runs, double alpha) {
+  return std::sqrt(std::log(2.0 / alpha) / (2.0 * static_cast<double>(runs)));
+}
+
 }  // namespace smcbip::smc

@@ -20,4 +20,9 @@ SamplingPlan single_sampling_plan(double theta, double delta, double alpha, doub
 /// 1 - alpha (Chernoff-Hoeffding).
 std::uint64_t chernoff_samples(double delta, double alpha);
 
+/// DKW's band: the half-width eps = sqrt(ln(2 / alpha) / (2 n)) within which the empirical
+/// distribution function of n runs stays everywhere at once, with probability 1 - alpha
+/// (Dvoretzky-Kiefer-Wolfowitz with Massart's constant). For one point it is Hoeffding's.
+double dkw_half_width(std::uint64_t runs, double alpha);
+
 }  // namespace smcbip::smc

@@ -1,14 +1,16 @@
 #include "smc/tools/check_command.h"
 
-#include <iomanip>
+#include <filesystem>
 #include <iostream>
 #include <map>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 
+#include "bipc/ir/model_hash.h"
+#include "bipc/output_file.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
+#include "smc/tools/report.h"
+#include "smc/tools/sweep_plot.h"
 
 namespace smcbip::tools {
 namespace {
@@ -23,62 +25,57 @@ const std::map<std::string, smc::UndecidedPolicy> kPolicies{{"fail", smc::Undeci
                                                             {"skip", smc::UndecidedPolicy::Skip},
                                                             {"error", smc::UndecidedPolicy::Error}};
 
-std::string number(double v) {
-  std::ostringstream out;
-  out << std::setprecision(6) << v;
-  return out.str();
+/// Whether the files to write can be written once the answers are known: their folders exist.
+bool writable_outputs(const CheckCommand& check) {
+  for (const std::string& path : {check.plot, check.csv}) {
+    if (path.empty()) continue;
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+      std::cerr << "smcbip: error: " << path << ": no folder " << folder.string() << "\n";
+      return false;
+    }
+  }
+  return true;
 }
 
-std::string query_text(const monitors::PropertyFile& file, const smc::QueryResult& r) {
-  std::string text = to_string(file.queries[r.query]);
-  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number(value);
-  return text;
+/// `--plot` needs a query over a parameter.
+bool plottable(const CheckCommand& check, const monitors::PropertyFile& file) {
+  if (check.plot.empty()) return true;
+  for (const monitors::Query& q : file.queries) {
+    if (sweeps_parameter(file, q)) return true;
+  }
+  std::cerr << "smcbip: error: --plot: no query of " << check.properties
+            << " names a parameter (declare one with param, or give --param NAME=values)\n";
+  return false;
 }
 
-void print_table(const monitors::PropertyFile& file, const std::vector<smc::QueryResult>& rs) {
-  for (const smc::QueryResult& r : rs) {
-    std::cout << query_text(file, r) << "\n  " << smc::method_name(r.method) << ": ";
-    if (!r.error.empty()) {
-      std::cout << "no answer: " << r.error << "\n";
-      continue;
-    }
-    if (r.verdict) std::cout << (*r.verdict ? "holds" : "does not hold") << ", ";
-    std::cout << "estimate " << number(r.estimate);
-    if (r.method != smc::Method::Sprt && r.method != smc::Method::Ssp) {
-      std::cout << " in [" << number(r.ci.low) << ", " << number(r.ci.high) << "]";
-    }
-    std::cout << ", " << r.samples << " runs";
-    if (r.undecided > 0) std::cout << " (" << r.undecided << " undecided)";
-    std::cout << ", " << number(r.seconds) << " s\n";
+std::optional<std::string> hash_of(const bipc::ir::System& system, const CheckCommand& check) {
+  try {
+    return bipc::ir::model_hash(system,
+                                bipc::ir::extern_sources_of(system, check.model.include_dirs));
+  } catch (const bipc::ir::ExternSourceError& e) {
+    std::cerr << "smcbip: error: extern source " << e.path << ": " << e.message << "\n";
+    return std::nullopt;
   }
 }
 
-void print_json(const monitors::PropertyFile& file, const std::vector<smc::QueryResult>& rs) {
-  using Json = nlohmann::ordered_json;
-  Json results = Json::array();
-  for (const smc::QueryResult& r : rs) {
-    Json line;
-    line["query"] = to_string(file.queries[r.query]);
-    line["method"] = smc::method_name(r.method);
-    line["param"] = Json::object();
-    for (const auto& [name, value] : r.parameters) line["param"][name] = value;
-    line["estimate"] = r.error.empty() ? Json(r.estimate) : Json(nullptr);
-    line["ci"] = r.error.empty() ? Json::array({r.ci.low, r.ci.high}) : Json(nullptr);
-    line["verdict"] = r.verdict ? Json(*r.verdict) : Json(nullptr);
-    line["samples"] = r.samples;
-    line["undecided"] = r.undecided;
-    line["seconds"] = r.seconds;
-    if (!r.error.empty()) line["error"] = r.error;
-    results.push_back(std::move(line));
-  }
-  Json out;
-  out["results"] = std::move(results);
-  std::cout << out.dump(2) << "\n";
+bool write_outputs(const CheckCommand& check, const Report& report) {
+  bool ok = true;
+  const auto write = [&](const std::string& path, const std::string& text) {
+    std::string error;
+    if (path.empty() || bipc::write_file_atomically(path, text, error)) return;
+    std::cerr << "smcbip: error: " << error << "\n";
+    ok = false;
+  };
+  write(check.csv, check.csv.empty() ? "" : csv_text(report));
+  write(check.plot, check.plot.empty() ? "" : sweep_svg(report));
+  return ok;
 }
 
 }  // namespace
 
-void register_check_options(CLI::App& command, CheckCommand& check) {
+void register_check_options(CLI::App& command, CheckCommand& check, bool explore) {
+  check.explore = explore;
   smc::CheckOptions& o = check.options;
   command.add_option("MODEL", check.model.file, "the BIP model")->required();
   command.add_option("PROP", check.properties, "the property file (.mtl or .ltl)")->required();
@@ -108,6 +105,13 @@ void register_check_options(CLI::App& command, CheckCommand& check) {
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62))
       ->capture_default_str();
   command.add_flag("--json", check.json, "print the results as one JSON object");
+  command.add_option("--param", check.parameters,
+                     "a parameter's values, NAME=start:stop:step or NAME={v1,v2,...} (replaces "
+                     "the file's declaration of NAME)");
+  if (explore) {
+    command.add_option("--plot", check.plot, "write the sweeps' plot (SVG) to this file");
+    command.add_option("--csv", check.csv, "write the results as CSV to this file");
+  }
   command
       .add_option("--undecided", check.undecided,
                   "undecided runs: fail (count as false), skip (not counted), error (skipped "
@@ -122,15 +126,19 @@ int run_check(CheckCommand check) {
   LoadFailure failure{};
   const std::optional<bipc::ir::System> system = load_model_system(check.model, failure);
   if (!system) return kInputError;
-  monitors::ParsedProperties parsed = monitors::load_properties(check.properties);
+  monitors::ParsedProperties parsed = monitors::load_properties(check.properties, check.parameters);
   if (parsed.ok()) monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
   if (!parsed.ok()) {
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;
   }
+  if (!plottable(check, parsed.file) || !writable_outputs(check)) return kInputError;
+  const std::optional<std::string> hash = hash_of(*system, check);
+  if (!hash) return kInputError;
   std::vector<smc::QueryResult> results;
   try {
-    results = smc::check_properties(*system, parsed.file, check.options);
+    results = check.explore ? smc::explore_properties(*system, parsed.file, check.options)
+                            : smc::check_properties(*system, parsed.file, check.options);
   } catch (const monitors::MonitorError& e) {
     parsed.diagnostics.error(e.at, e.what());
     std::cerr << parsed.diagnostics.format(parsed.sources);
@@ -139,12 +147,15 @@ int run_check(CheckCommand check) {
     std::cerr << "smcbip: error: " << check.model.file << ": " << e.what() << "\n";
     return kInputError;
   }
+  const Report report{parsed.file, results, check.model.file, system->root_name, *hash};
   if (check.json) {
-    print_json(parsed.file, results);
+    std::cout << json_text(report);
+  } else if (check.explore) {
+    print_sweeps(std::cout, report);
   } else {
-    print_table(parsed.file, results);
+    print_results(std::cout, report);
   }
-  int code = 0;
+  int code = write_outputs(check, report) ? 0 : kInputError;
   for (const smc::QueryResult& r : results) {
     if (!r.error.empty()) {
       std::cerr << "smcbip: error: " << to_string(parsed.file.queries[r.query]) << ": " << r.error

@@ -1,5 +1,6 @@
 // `smcbip check MODEL PROP ...`: every query of a property file answered by statistical model
-// checking over runs of the model.
+// checking over runs of the model; `smcbip explore` answers them with one guarantee for each
+// query's whole parameter sweep, and plots the sweeps.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,10 +17,14 @@ struct CheckCommand {
   std::string properties;
   std::string method = "auto", undecided = "error";
   bool json = false;
+  std::vector<std::string> parameters;  // --param NAME=values
   smc::CheckOptions options;
+  bool explore = false;
+  std::string plot, csv;  // explore: files to write
 };
 
-void register_check_options(CLI::App& command, CheckCommand& check);
+/// The options of `check`, and with `explore` set those of `explore` too.
+void register_check_options(CLI::App& command, CheckCommand& check, bool explore);
 
 /// 0 when every hypothesis holds, 1 when one does not, 2 on bad input or a query left without
 /// an answer (reported on stderr).

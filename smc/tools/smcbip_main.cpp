@@ -3,8 +3,8 @@
 //
 // `smcbip simulate` exits with the reference engine's run codes (0 normal end, 1..7 model
 // errors), 64 for usage errors, 65 for bad input, 70 for internal errors. `smcbip monitor` and
-// `smcbip check` exit with 0 (no property false), 1 (one is), 2 (bad input or usage), 3
-// (internal error).
+// `smcbip check` and `smcbip explore` exit with 0 (no property false), 1 (one is), 2 (bad input or
+// usage), 3 (internal error).
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -98,9 +98,14 @@ int main(int argc, char** argv) {
     tools::CheckCommand check_command;
     CLI::App* check = app.add_subcommand(
         "check", "answer the queries of a property file by statistical model checking");
-    tools::register_check_options(*check, check_command);
-    // The exit codes of `monitor` and `check` are those of checking, not of runs.
-    judging = argc > 1 && (std::string(argv[1]) == "monitor" || std::string(argv[1]) == "check");
+    tools::register_check_options(*check, check_command, false);
+    tools::CheckCommand explore_command;
+    CLI::App* explore = app.add_subcommand(
+        "explore", "answer parametric queries over their whole sweep at once, and plot them");
+    tools::register_check_options(*explore, explore_command, true);
+    // The exit codes of `monitor`, `check` and `explore` are those of checking, not of runs.
+    const std::string command = argc > 1 ? argv[1] : "";
+    judging = command == "monitor" || command == "check" || command == "explore";
     try {
       app.parse(argc, argv);
       if (simulate->parsed() && frontend.file.empty() && compiled.empty()) {
@@ -114,6 +119,7 @@ int main(int argc, char** argv) {
     }
     if (monitor->parsed()) return tools::run_monitor(monitor_options);
     if (check->parsed()) return tools::run_check(check_command);
+    if (explore->parsed()) return tools::run_check(explore_command);
     if (!compiled.empty()) return run_compiled(frontend, compiled, options);
     return run_simulate(frontend, options);
   } catch (const std::exception& e) {

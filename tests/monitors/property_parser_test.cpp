@@ -121,5 +121,45 @@ TEST(PropertyParser, ReportsAnUnreadableFile) {
             "/nonexistent/property.mtl:0:0: error: cannot read the property file\n");
 }
 
+TEST(PropertyParser, TakesParametersFromTheCommandLine) {
+  const std::string text =
+      "param t = 0:100:10\nconst c = 3\nP=? [ F[0,t] (x > c) ]\nP=? [ F[0,u] y ]\n";
+  const ParsedProperties parsed = parse_properties(text, "f.mtl", {"t={5, 7}", "u=1:3:1"});
+  ASSERT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  const auto values = parameter_values(parsed.file);
+  EXPECT_EQ(values.at("t"), (std::vector<double>{5, 7}));
+  EXPECT_EQ(values.at("u"), (std::vector<double>{1, 2, 3}));
+  // The file's t keeps its place: it is still declared before the constant.
+  EXPECT_EQ(parsed.file.declarations[1].name, "t");
+  EXPECT_EQ(parsed.file.declarations[1].at.line, 1u);
+  EXPECT_EQ(parsed.file.declarations.size(), 3u);
+}
+
+TEST(PropertyParser, GivenParametersReplaceConstants) {
+  const ParsedProperties parsed =
+      parse_properties("const c = 3\nP=? [ F[0,c] y ]\n", "f.mtl", {"c={1,2}"});
+  ASSERT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  EXPECT_EQ(parameter_values(parsed.file).at("c"), (std::vector<double>{1, 2}));
+  EXPECT_TRUE(constant_values(parsed.file).empty());
+}
+
+TEST(PropertyParser, ReportsBadCommandLineParameters) {
+  const auto error = [](const std::string& given) {
+    const ParsedProperties parsed = parse_properties("P=? [ F[0,t] y ]\n", "f.mtl", {given});
+    EXPECT_FALSE(parsed.ok()) << given;
+    return parsed.diagnostics.format(parsed.sources);
+  };
+  EXPECT_NE(error("t=0:10").find("--param:1:7: error: expected ':' between the range's stop"),
+            std::string::npos);
+  EXPECT_NE(error("t=5:1:1").find("stops (1) before it starts (5)"), std::string::npos);
+  EXPECT_NE(error("t=0:10:0").find("must be > 0"), std::string::npos);
+  EXPECT_NE(error("").find("--param:"), std::string::npos);
+  EXPECT_NE(error("t={1}; P=? [ y ]").find("expected one parameter"), std::string::npos);
+  // Without the parameter, t is unknown.
+  const ParsedProperties unknown = parse_properties("P=? [ F[0,t] y ]\n", "f.mtl");
+  EXPECT_NE(unknown.diagnostics.format(unknown.sources).find("unknown constant or parameter 't'"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace smcbip::monitors

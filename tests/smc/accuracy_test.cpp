@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "smc/smc.h"
-#include "tests/engines/temp_model.h"
+#include "tests/smc/check_fixtures.h"
 
 namespace smcbip::smc {
 namespace {
@@ -24,30 +24,21 @@ constexpr double kDelta = 0.005;
 constexpr double kAlpha = 0.01;
 
 const bipc::ir::System& model(const std::string& file) {
-  static std::map<std::string, std::optional<bipc::ir::System>> loaded;
-  auto [it, fresh] = loaded.try_emplace(file);
-  if (fresh) {
-    it->second =
-        tests::load_model(std::string(SMCBIP_SOURCE_DIR) + "/tests/smc/models/" + file, "System()");
-  }
-  return *it->second;
+  return tests::model_in("tests/smc/models", file);
 }
 
 /// The answers to `queries` on `file` by PESTIM at kDelta, kAlpha, each checked to have its
 /// full sample count and no undecided run, so that only the estimates are left to compare.
 std::vector<QueryResult> estimate(const std::string& file, const std::string& queries,
                                   std::uint64_t seed) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(queries, "q.mtl");
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  monitors::resolve_names(parsed.file, model(file), parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  const monitors::PropertyFile properties = tests::properties(queries, model(file));
   CheckOptions options;
   options.method = Method::Pestim;
   options.delta = kDelta;
   options.alpha = kAlpha;  // 105,967 runs per query
   options.seed = seed;
   options.threads = 2;
-  std::vector<QueryResult> results = check_properties(model(file), parsed.file, options);
+  std::vector<QueryResult> results = check_properties(model(file), properties, options);
   for (const QueryResult& r : results) {
     EXPECT_EQ(r.error, "");
     EXPECT_EQ(r.method, Method::Pestim);

@@ -11,28 +11,14 @@
 #include <string>
 
 #include "smc/smc.h"
-#include "tests/engines/temp_model.h"
+#include "tests/smc/check_fixtures.h"
 
 namespace smcbip::smc {
 namespace {
 
-const bipc::ir::System& model(const std::string& file) {
-  static std::map<std::string, std::optional<bipc::ir::System>> loaded;
-  auto [it, fresh] = loaded.try_emplace(file);
-  if (fresh) {
-    it->second = tests::load_model(std::string(SMCBIP_SOURCE_DIR) + "/models/" + file, "System()");
-  }
-  return *it->second;
-}
+const bipc::ir::System& model(const std::string& file) { return tests::model_in("models", file); }
 
-std::vector<QueryResult> check(const std::string& file, const std::string& queries,
-                               const CheckOptions& options) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(queries, "q.mtl");
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  monitors::resolve_names(parsed.file, model(file), parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  return check_properties(model(file), parsed.file, options);
-}
+using tests::check;
 
 TEST(Check, EstimatesTheRaceOfTwoExponentials) {
   CheckOptions options;

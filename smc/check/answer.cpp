@@ -1,0 +1,144 @@
+#include "smc/check/answer.h"
+
+#include <algorithm>
+#include <boost/math/distributions/normal.hpp>
+#include <cmath>
+#include <string>
+
+namespace smcbip::smc {
+namespace {
+
+using monitors::Verdict;
+
+bool holds_at_least(monitors::Comparison c) {
+  return c == monitors::Comparison::GreaterEqual || c == monitors::Comparison::Greater;
+}
+
+bool compare(double estimate, monitors::Comparison c, double theta) {
+  switch (c) {
+    case monitors::Comparison::GreaterEqual:
+      return estimate >= theta;
+    case monitors::Comparison::Greater:
+      return estimate > theta;
+    case monitors::Comparison::LessEqual:
+      return estimate <= theta;
+    case monitors::Comparison::Less:
+      return estimate < theta;
+  }
+  return false;
+}
+
+double ratio(std::uint64_t x, std::uint64_t n) {
+  return n == 0 ? 0.0 : static_cast<double>(x) / static_cast<double>(n);
+}
+
+}  // namespace
+
+Method method_for(const monitors::Query& q, Method asked) {
+  using K = monitors::Query::Kind;
+  if (q.kind == K::Expectation) return Method::Mean;
+  if (asked == Method::Band) return Method::Band;
+  const bool tests = asked == Method::Sprt || asked == Method::Ssp;
+  if (asked == Method::Auto || (tests && q.kind == K::Estimate)) {
+    return q.kind == K::Hypothesis ? Method::Sprt : Method::Pestim;
+  }
+  return asked;
+}
+
+Answer::Answer(const monitors::Query& q, const CheckOptions& options, double theta,
+               std::uint64_t runs, QueryResult& result)
+    : q_(&q), options_(options), theta_(theta), runs_(runs), r_(&result) {}
+
+bool Answer::take(const Outcome& outcome) {
+  if (outcome.verdict == Verdict::Undecided) {
+    ++r_->undecided;
+    if (options_.undecided == UndecidedPolicy::Error && r_->undecided > 10 &&
+        r_->undecided * 100 > r_->samples + r_->undecided) {
+      r_->error = std::to_string(r_->undecided) + " of " +
+                  std::to_string(r_->samples + r_->undecided) +
+                  " runs undecided (more than 1%): raise --max-steps, or choose --undecided";
+      return false;
+    }
+    if (options_.undecided != UndecidedPolicy::Fail) return true;
+  }
+  ++r_->samples;
+  return sample(outcome.verdict == Verdict::True, outcome.value);
+}
+
+void Answer::finish() {
+  if (r_->method == Method::Mean) {
+    finish_mean();
+    return;
+  }
+  if (r_->method == Method::Band) {
+    const double epsilon = dkw_half_width(r_->samples, options_.alpha);
+    r_->ci = {std::max(0.0, r_->estimate - epsilon), std::min(1.0, r_->estimate + epsilon)};
+  }
+  if (q_->kind == monitors::Query::Kind::Hypothesis && !r_->verdict && r_->error.empty()) {
+    r_->verdict = compare(r_->estimate, q_->comparison, theta_);
+  }
+}
+
+void Answer::finish_mean() {
+  const double n = static_cast<double>(r_->samples);
+  r_->estimate = sum_ / n;
+  const double variance = n > 1 ? (squares_ - n * r_->estimate * r_->estimate) / (n - 1) : 0;
+  const boost::math::normal normal;
+  const double z = boost::math::quantile(normal, 1 - (1 - options_.confidence) / 2);
+  const double half = z * std::sqrt(std::max(0.0, variance) / n);
+  r_->ci = {r_->estimate - half, r_->estimate + half};
+}
+
+bool Answer::sample(bool satisfied, double value) {
+  switch (r_->method) {
+    case Method::Sprt: {
+      if (!sprt_) sprt_.emplace(theta_, options_.delta, options_.alpha, options_.beta);
+      const Decision d = sprt_->add(satisfied);
+      r_->estimate = ratio(sprt_->successes(), sprt_->samples());
+      if (d == Decision::Undecided) return true;
+      r_->verdict = (d == Decision::AtLeast) == holds_at_least(q_->comparison);
+      return false;
+    }
+    case Method::Ssp: {
+      if (!plan_)
+        plan_ = single_sampling_plan(theta_, options_.delta, options_.alpha, options_.beta);
+      successes_ += satisfied;
+      r_->estimate = ratio(successes_, r_->samples);
+      if (r_->samples < plan_->n) return true;
+      r_->verdict = (successes_ > plan_->c) == holds_at_least(q_->comparison);
+      return false;
+    }
+    case Method::Pestim:
+    case Method::Band: {
+      // The same number of runs: Hoeffding's bound for one point is DKW's for all at once.
+      const std::uint64_t n = chernoff_samples(options_.delta, options_.alpha);
+      successes_ += satisfied;
+      r_->estimate = ratio(successes_, r_->samples);
+      r_->ci = {std::max(0.0, r_->estimate - options_.delta),
+                std::min(1.0, r_->estimate + options_.delta)};
+      return r_->samples < n;
+    }
+    case Method::Ci: {
+      if (!interval_) interval_.emplace(options_.delta, options_.alpha);
+      const bool done = interval_->add(satisfied);
+      r_->estimate = interval_->estimate();
+      r_->ci = interval_->interval();
+      return !done;
+    }
+    case Method::Bayes: {
+      if (!bayes_) bayes_.emplace(options_.delta, options_.confidence);
+      const bool done = bayes_->add(satisfied);
+      r_->estimate = bayes_->estimate();
+      r_->ci = bayes_->interval();
+      return !done;
+    }
+    case Method::Mean:
+    case Method::Auto:
+      break;
+  }
+  sum_ += value;
+  squares_ += value * value;
+  return r_->samples < runs_;
+}
+
+}  // namespace smcbip::smc

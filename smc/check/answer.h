@@ -1,0 +1,57 @@
+// Consuming one query point's run outcomes, in run-index order, into its answer: a hypothesis
+// test's verdict or an estimate with its interval.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "monitors/monitors.h"
+#include "smc/check/check.h"
+#include "smc/stats/interval_estimation.h"
+#include "smc/stats/sampling_plans.h"
+#include "smc/stats/sprt.h"
+
+namespace smcbip::smc {
+
+/// One run's answer for one point: the formula's verdict, or the observed expression's
+/// maximum or minimum (then the verdict is True, or Undecided when the run observed nothing).
+struct Outcome {
+  monitors::Verdict verdict = monitors::Verdict::Undecided;
+  double value = 0;
+};
+
+/// The method a query is answered with when `asked` (Auto: SPRT for hypotheses, PESTIM for
+/// estimates; tests asked of estimates fall back to PESTIM; expectations take the mean).
+Method method_for(const monitors::Query& q, Method asked);
+
+/// Takes the outcomes of one point's runs in index order and keeps its answer in `result`.
+class Answer {
+ public:
+  /// `options`: what this point is judged at (α already split, method chosen); `theta`: a
+  /// hypothesis' threshold; `runs`: an expectation's number of runs.
+  Answer(const monitors::Query& q, const CheckOptions& options, double theta, std::uint64_t runs,
+         QueryResult& result);
+
+  /// Takes one run's outcome; false once the answer is known.
+  bool take(const Outcome& outcome);
+  /// Completes the answer once no more outcomes come.
+  void finish();
+
+ private:
+  bool sample(bool satisfied, double value);
+  void finish_mean();
+
+  const monitors::Query* q_;
+  CheckOptions options_;
+  double theta_;
+  std::uint64_t runs_;
+  QueryResult* r_;
+  std::optional<Sprt> sprt_;
+  std::optional<SamplingPlan> plan_;
+  std::optional<SequentialInterval> interval_;
+  std::optional<BayesianInterval> bayes_;
+  std::uint64_t successes_ = 0;
+  double sum_ = 0, squares_ = 0;
+};
+
+}  // namespace smcbip::smc

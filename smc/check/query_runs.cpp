@@ -1,0 +1,109 @@
+#include "smc/check/query_runs.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace smcbip::smc {
+namespace {
+
+using monitors::Verdict;
+
+// The engines count nanoseconds; models' times and bounds are in milliseconds.
+constexpr monitors::TimeScale kNanoseconds{1e6, 1e9};
+
+/// Where the runs' traces and output go: nowhere.
+class NullBuffer final : public std::streambuf {
+ protected:
+  int overflow(int c) override { return c; }
+};
+
+}  // namespace
+
+/// Passes each step to the observers of the points still judged, until all have decided.
+class QueryRuns::Observer final : public engines::RunObserver {
+ public:
+  void start(std::vector<engines::RunObserver*> observers) {
+    observers_ = std::move(observers);
+    watching_ = observers_;
+  }
+
+  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
+    std::erase_if(watching_, [&](engines::RunObserver* o) { return !o->observe(step, state); });
+    return !watching_.empty();
+  }
+
+  void finish(engines::RunEnd end, int code, const std::string& message) override {
+    for (engines::RunObserver* o : observers_) o->finish(end, code, message);
+  }
+
+ private:
+  std::vector<engines::RunObserver*> observers_, watching_;
+};
+
+QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::SimulateOptions& options,
+                     const QueryPoints& query)
+    : simulator_(system, options, engines::Externs::with_builtins()),
+      query_(query),
+      observer_(std::make_unique<Observer>()),
+      nothing_(std::make_unique<NullBuffer>()),
+      sink_(nothing_.get()) {
+  if (!simulator_.problem().empty()) throw std::invalid_argument(simulator_.problem());
+  const monitors::Query& q = *query.query;
+  if (query.swept) {
+    double largest = 0;
+    for (const monitors::Bindings& b : query.points)
+      largest = std::max(largest, b.at(*query.swept));
+    sweep_ = std::make_unique<monitors::RunCriticalBound>(
+        *q.formula, *query.swept, largest, kNanoseconds, query.points.front(), q.run);
+    return;
+  }
+  for (const monitors::Bindings& b : query.points) {
+    if (q.formula) {
+      monitors_.push_back(
+          std::make_unique<monitors::RunMonitor>(*q.formula, kNanoseconds, b, q.run));
+    } else {
+      extrema_.push_back(std::make_unique<monitors::RunExtremum>(q, kNanoseconds, b));
+    }
+  }
+}
+
+QueryRuns::~QueryRuns() = default;
+
+std::vector<Outcome> QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
+  const std::size_t n = query_.points.size();
+  std::vector<engines::RunObserver*> observers;
+  if (sweep_) {
+    sweep_->reset();
+    observers.push_back(sweep_.get());
+  }
+  for (std::size_t p = 0; p < monitors_.size(); ++p) {
+    if (done[p].load(std::memory_order_relaxed)) continue;
+    monitors_[p]->reset();
+    observers.push_back(monitors_[p].get());
+  }
+  for (std::size_t p = 0; p < extrema_.size(); ++p) {
+    if (done[p].load(std::memory_order_relaxed)) continue;
+    extrema_[p]->reset();
+    observers.push_back(extrema_[p].get());
+  }
+  observer_->start(std::move(observers));
+  simulator_.run(index, engines::RunStreams{sink_, sink_}, observer_.get());
+
+  std::vector<Outcome> outcomes(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (done[p].load(std::memory_order_relaxed) && !sweep_) continue;
+    if (sweep_) {
+      outcomes[p].verdict = sweep_->verdict(query_.points[p].at(*query_.swept));
+    } else if (!monitors_.empty()) {
+      outcomes[p].verdict = monitors_[p]->verdict();
+    } else {
+      // An expectation: a run that observed nothing has no value (NaN, as the mean then says).
+      outcomes[p] = {Verdict::True,
+                     extrema_[p]->value().value_or(std::numeric_limits<double>::quiet_NaN())};
+    }
+  }
+  return outcomes;
+}
+
+}  // namespace smcbip::smc

@@ -1,0 +1,53 @@
+// One run of a model judged for every point of a query (each value of its parameters) at once:
+// the points share the run, so a sweep costs one simulation per run index, not one per point.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+#include "engines/engines.h"
+#include "monitors/monitors.h"
+#include "smc/check/answer.h"
+
+namespace smcbip::smc {
+
+/// A query with the points it is judged at.
+struct QueryPoints {
+  const monitors::Query* query = nullptr;
+  std::vector<monitors::Bindings> points;  // constants and parameters
+  /// Set when F[0,t]/G[0,t] is judged for every value of t by one critical bound.
+  std::optional<std::string> swept;
+};
+
+/// Makes runs of a query's model on one thread and judges them for its points.
+class QueryRuns {
+ public:
+  /// Throws std::invalid_argument when the model cannot run.
+  QueryRuns(const bipc::ir::System& system, const engines::SimulateOptions& options,
+            const QueryPoints& query);
+  ~QueryRuns();
+
+  /// Run `index`, judged for the points whose `done` flag is clear (the others get Undecided);
+  /// it stops once every one of them is decided.
+  std::vector<Outcome> run(std::uint64_t index, const std::atomic<bool>* done);
+
+ private:
+  class Observer;
+
+  engines::Simulator simulator_;
+  const QueryPoints& query_;
+  std::vector<std::unique_ptr<monitors::RunMonitor>> monitors_;  // path formulas, per point
+  std::vector<std::unique_ptr<monitors::RunExtremum>> extrema_;  // expectations, per point
+  std::unique_ptr<monitors::RunCriticalBound> sweep_;            // all points at once
+  std::unique_ptr<Observer> observer_;
+  std::unique_ptr<std::streambuf> nothing_;
+  std::ostream sink_;
+};
+
+}  // namespace smcbip::smc

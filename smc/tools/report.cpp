@@ -1,0 +1,175 @@
+#include "smc/tools/report.h"
+
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "smc/stats/sampling_plans.h"
+
+namespace smcbip::tools {
+namespace {
+
+std::string number(double v, int digits = 6) {
+  std::ostringstream out;
+  out << std::setprecision(digits) << v;
+  return out.str();
+}
+
+bool has_interval(const smc::QueryResult& r) {
+  return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp;
+}
+
+std::string verdict_text(const smc::QueryResult& r) {
+  if (!r.verdict) return "";
+  return *r.verdict ? "holds" : "does not hold";
+}
+
+std::string parameters_text(const smc::QueryResult& r) {
+  std::string text;
+  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number(value);
+  return text;
+}
+
+/// Why the results of one query hold together: one band, or α split over its points.
+std::string guarantee(const smc::QueryResult& first, std::size_t points) {
+  std::ostringstream out;
+  if (first.method == smc::Method::Band) {
+    out << "one set of " << first.samples << " runs judges all " << points
+        << " values; each estimate is within +-"
+        << number(smc::dkw_half_width(first.samples, first.alpha), 3)
+        << " of its probability, all at once, with confidence " << number(1 - first.alpha)
+        << " (DKW band)";
+  } else if (first.split > 1) {
+    out << "the " << points << " points share their runs; alpha "
+        << number(first.alpha * static_cast<double>(first.split)) << " is split over them ("
+        << number(first.alpha, 4) << " each), so every answer holds at once with confidence "
+        << number(1 - first.alpha * static_cast<double>(first.split));
+  } else {
+    out << "one point";
+  }
+  return out.str();
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::string query_text(const Report& report, const smc::QueryResult& r) {
+  return to_string(report.file.queries[r.query]);
+}
+
+void print_results(std::ostream& out, const Report& report) {
+  for (const smc::QueryResult& r : report.results) {
+    out << query_text(report, r) << parameters_text(r) << "\n  " << smc::method_name(r.method)
+        << ": ";
+    if (!r.error.empty()) {
+      out << "no answer: " << r.error << "\n";
+      continue;
+    }
+    if (r.verdict) out << verdict_text(r) << ", ";
+    out << "estimate " << number(r.estimate);
+    if (has_interval(r)) out << " in [" << number(r.ci.low) << ", " << number(r.ci.high) << "]";
+    out << ", " << r.samples << " runs";
+    if (r.undecided > 0) out << " (" << r.undecided << " undecided)";
+    out << ", " << number(r.seconds) << " s\n";
+  }
+}
+
+void print_sweeps(std::ostream& out, const Report& report) {
+  const auto& rs = report.results;
+  for (std::size_t i = 0; i < rs.size();) {
+    std::size_t end = i;
+    while (end < rs.size() && rs[end].query == rs[i].query) ++end;
+    out << query_text(report, rs[i]) << "\n  " << smc::method_name(rs[i].method) << ": "
+        << guarantee(rs[i], end - i) << "\n";
+    for (; i < end; ++i) {
+      const smc::QueryResult& r = rs[i];
+      out << "  ";
+      for (const auto& [name, value] : r.parameters) {
+        out << name << "=" << std::left << std::setw(8) << number(value) << " ";
+      }
+      out << std::right;
+      if (!r.error.empty()) {
+        out << "no answer: " << r.error << "\n";
+        continue;
+      }
+      out << std::setw(10) << number(r.estimate);
+      if (has_interval(r)) {
+        out << "  [" << number(r.ci.low, 4) << ", " << number(r.ci.high, 4) << "]";
+      }
+      if (r.verdict) out << "  " << verdict_text(r);
+      out << "  " << r.samples << " runs";
+      if (r.undecided > 0) out << " (" << r.undecided << " undecided)";
+      out << "\n";
+    }
+    out << "  " << number(rs[end - 1].seconds, 3) << " s\n";
+  }
+}
+
+std::string json_text(const Report& report) {
+  using Json = nlohmann::ordered_json;
+  Json results = Json::array();
+  for (const smc::QueryResult& r : report.results) {
+    Json line;
+    line["query"] = query_text(report, r);
+    line["method"] = smc::method_name(r.method);
+    line["param"] = Json::object();
+    for (const auto& [name, value] : r.parameters) line["param"][name] = value;
+    line["estimate"] = r.error.empty() ? Json(r.estimate) : Json(nullptr);
+    line["ci"] = r.error.empty() ? Json::array({r.ci.low, r.ci.high}) : Json(nullptr);
+    line["verdict"] = r.verdict ? Json(*r.verdict) : Json(nullptr);
+    line["samples"] = r.samples;
+    line["undecided"] = r.undecided;
+    line["seconds"] = r.seconds;
+    line["alpha"] = r.alpha;
+    if (!r.error.empty()) line["error"] = r.error;
+    results.push_back(std::move(line));
+  }
+  Json out;
+  out["model"] = {{"file", report.model}, {"root", report.root}, {"hash", report.hash}};
+  out["results"] = std::move(results);
+  return out.dump(2) + "\n";
+}
+
+std::string csv_text(const Report& report) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const smc::QueryResult& r : report.results) {
+    for (const auto& [name, value] : r.parameters) {
+      if (seen.insert(name).second) names.push_back(name);
+    }
+  }
+  std::ostringstream out;
+  out << "query";
+  for (const std::string& name : names) out << "," << csv_field(name);
+  out << ",method,estimate,ci_low,ci_high,verdict,samples,undecided,alpha,seconds\n";
+  for (const smc::QueryResult& r : report.results) {
+    out << csv_field(query_text(report, r));
+    for (const std::string& name : names) {
+      out << ",";
+      if (const auto found = r.parameters.find(name); found != r.parameters.end()) {
+        out << number(found->second, 17);
+      }
+    }
+    out << "," << smc::method_name(r.method) << ",";
+    if (r.error.empty()) {
+      out << number(r.estimate, 17) << "," << number(r.ci.low, 17) << "," << number(r.ci.high, 17);
+    } else {
+      out << ",,";
+    }
+    out << "," << (r.verdict ? (*r.verdict ? "true" : "false") : "") << "," << r.samples << ","
+        << r.undecided << "," << number(r.alpha, 17) << "," << number(r.seconds) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace smcbip::tools

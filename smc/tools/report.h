@@ -1,0 +1,33 @@
+// What `smcbip check` and `smcbip explore` print and write: a table for people, one JSON
+// object, CSV rows for spreadsheets.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "monitors/monitors.h"
+#include "smc/check/check.h"
+
+namespace smcbip::tools {
+
+/// The results of one property file on one model.
+struct Report {
+  const monitors::PropertyFile& file;
+  const std::vector<smc::QueryResult>& results;
+  std::string model, root, hash;  // the model's file, root and ir::model_hash
+};
+
+/// A query's text without its parameters' values.
+std::string query_text(const Report& report, const smc::QueryResult& r);
+
+/// Each result on its own lines (check).
+void print_results(std::ostream& out, const Report& report);
+/// Each query, with what its sweep's guarantee is, then a row per point (explore).
+void print_sweeps(std::ostream& out, const Report& report);
+/// `{"model": {...}, "results": [...]}`, results in file order.
+std::string json_text(const Report& report);
+/// A header, then a row per result; a column per parameter of the file.
+std::string csv_text(const Report& report);
+
+}  // namespace smcbip::tools
