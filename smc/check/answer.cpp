@@ -79,6 +79,26 @@ void Answer::finish() {
   }
 }
 
+std::uint64_t Answer::target() const {
+  switch (r_->method) {
+    case Method::Pestim:
+    case Method::Band:
+      return chernoff_samples(options_.delta, options_.alpha);
+    case Method::Ssp:
+      return plan_ ? plan_->n : 0;
+    case Method::Mean:
+      return runs_;
+    default:
+      return 0;
+  }
+}
+
+double Answer::test_position() const {
+  if (!sprt_) return -1;
+  const double span = sprt_->reject_threshold() - sprt_->accept_threshold();
+  return std::clamp((sprt_->log_ratio() - sprt_->accept_threshold()) / span, 0.0, 1.0);
+}
+
 void Answer::finish_mean() {
   const double n = static_cast<double>(r_->samples);
   r_->estimate = sum_ / n;

@@ -37,6 +37,12 @@ class Answer {
   /// Completes the answer once no more outcomes come.
   void finish();
 
+  /// The runs a fixed-size method needs (0 for a sequential one).
+  std::uint64_t target() const;
+  /// SPRT: where the log-likelihood ratio stands between the threshold that accepts (0) and
+  /// the one that rejects (1); -1 for other methods.
+  double test_position() const;
+
  private:
   bool sample(bool satisfied, double value);
   void finish_mean();

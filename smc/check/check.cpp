@@ -78,6 +78,27 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   // Set by the consumer once a point's answer is known; workers then stop judging it.
   const auto done = std::make_unique<std::atomic<bool>[]>(n);
   std::size_t open = n;
+  std::uint64_t consumed = 0;
+  auto reported = start;
+  const auto report = [&] {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - reported < std::chrono::milliseconds(100)) return;
+    reported = now;
+    Progress p;
+    p.query = query.index;
+    p.points = n;
+    p.open = open;
+    p.runs = consumed;
+    p.seconds = std::chrono::duration<double>(now - start).count();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (done[i].load(std::memory_order_relaxed)) continue;
+      p.target = answers[i].target();
+      p.estimate = results[i].estimate;
+      p.test_position = answers[i].test_position();
+      break;
+    }
+    options.progress(p);
+  };
   OrderedSampler<std::vector<Outcome>> sampler(
       threads, [&](unsigned w, std::uint64_t index) { return workers[w]->run(index, done.get()); });
   sampler.run(0, [&](const std::vector<Outcome>& outcomes) {
@@ -86,6 +107,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
       done[p].store(true, std::memory_order_relaxed);
       --open;
     }
+    // Reading the clock costs little next to a run, but only every 64th run asks.
+    if (++consumed % 64 == 0 && options.progress) report();
     return open > 0;
   });
   const double seconds =
@@ -124,6 +147,7 @@ std::vector<QueryResult> answer_all(const bipc::ir::System& system,
   for (std::size_t i = 0; i < file.queries.size(); ++i) {
     QueryPoints query;
     query.query = &file.queries[i];
+    query.index = i;
     query.points = monitors::query_bindings(file, file.queries[i]);
     if (simultaneous && options.method == Method::Auto) {
       query.swept = band_parameter(*query.query, parameters, query.points);

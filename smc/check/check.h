@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,19 @@ enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Ban
 /// drawn), or not at all up to 1% of the runs, beyond which the query fails with an error.
 enum class UndecidedPolicy : std::uint8_t { Fail, Skip, Error };
 
+/// Where a query's answer stands while its runs are made (for a progress display).
+struct Progress {
+  std::size_t query = 0;             // index in the file
+  std::size_t points = 1, open = 1;  // the query's points, and those not answered yet
+  std::uint64_t runs = 0;            // made and consumed so far
+  std::uint64_t target = 0;          // runs a fixed-size method needs (0: sequential)
+  double estimate = 0;               // of the first open point
+  double seconds = 0;                // since the query started
+  /// SPRT: where the first open point's log-likelihood ratio stands between the threshold
+  /// that accepts (0) and the one that rejects (1); negative when there is none.
+  double test_position = -1;
+};
+
 struct CheckOptions {
   Method method = Method::Auto;  // Auto: SPRT for hypotheses, PESTIM for estimates
   double alpha = 0.05, beta = 0.05, delta = 0.01;
@@ -32,6 +46,8 @@ struct CheckOptions {
   std::uint64_t max_steps = 1'000'000;  // per run
   UndecidedPolicy undecided = UndecidedPolicy::Error;
   engines::EngineKind engine = engines::EngineKind::Optimised;
+  /// Called now and then (about ten times a second) while a query's runs are made.
+  std::function<void(const Progress&)> progress;
 };
 
 struct QueryResult {

@@ -20,6 +20,7 @@ namespace smcbip::smc {
 /// A query with the points it is judged at.
 struct QueryPoints {
   const monitors::Query* query = nullptr;
+  std::size_t index = 0;                   // in its file
   std::vector<monitors::Bindings> points;  // constants and parameters
   /// Set when F[0,t]/G[0,t] is judged for every value of t by one critical bound.
   std::optional<std::string> swept;

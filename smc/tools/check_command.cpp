@@ -9,6 +9,7 @@
 #include "bipc/output_file.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
+#include "smc/tools/progress_bar.h"
 #include "smc/tools/report.h"
 #include "smc/tools/sweep_plot.h"
 
@@ -135,18 +136,26 @@ int run_check(CheckCommand check) {
   if (!plottable(check, parsed.file) || !writable_outputs(check)) return kInputError;
   const std::optional<std::string> hash = hash_of(*system, check);
   if (!hash) return kInputError;
+  std::optional<ProgressBar> progress;
+  if (stderr_is_terminal()) {
+    progress.emplace(std::cerr, parsed.file.queries.size());
+    check.options.progress = [&](const smc::Progress& p) { progress->show(p); };
+  }
   std::vector<smc::QueryResult> results;
   try {
     results = check.explore ? smc::explore_properties(*system, parsed.file, check.options)
                             : smc::check_properties(*system, parsed.file, check.options);
   } catch (const monitors::MonitorError& e) {
+    progress.reset();
     parsed.diagnostics.error(e.at, e.what());
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;
   } catch (const std::invalid_argument& e) {
+    progress.reset();
     std::cerr << "smcbip: error: " << check.model.file << ": " << e.what() << "\n";
     return kInputError;
   }
+  if (progress) progress->clear();
   const Report report{parsed.file, results, check.model.file, system->root_name, *hash};
   if (check.json) {
     std::cout << json_text(report);

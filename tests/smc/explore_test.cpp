@@ -21,7 +21,7 @@ using tests::explore;
 
 double first_firing_by(double t) { return 1 - std::exp(-0.15 * t); }
 
-TEST(Explore, BandHoldsTheDistributionOfTheFirstFiring) {
+TEST(Sweep, BandHoldsTheDistributionOfTheFirstFiring) {
   CheckOptions options;
   options.delta = 0.01;
   options.alpha = 0.01;
@@ -48,7 +48,7 @@ TEST(Explore, BandHoldsTheDistributionOfTheFirstFiring) {
   }
 }
 
-TEST(Explore, BandJudgesTheSameRunsAsPointByPointEstimates) {
+TEST(Sweep, BandJudgesTheSameRunsAsPointByPointEstimates) {
   // One critical bound per run against one monitor per value of t, on the same numbered runs.
   const std::string queries =
       "param t = 0:100:5\n"
@@ -72,7 +72,7 @@ TEST(Explore, BandJudgesTheSameRunsAsPointByPointEstimates) {
   }
 }
 
-TEST(Explore, HypothesesOverABandAreRightOutsideTheIndifferenceRegion) {
+TEST(Sweep, HypothesesOverABandAreRightOutsideTheIndifferenceRegion) {
   CheckOptions options;
   options.delta = 0.02;
   options.alpha = 0.01;
@@ -93,7 +93,7 @@ TEST(Explore, HypothesesOverABandAreRightOutsideTheIndifferenceRegion) {
   }
 }
 
-TEST(Explore, GridsSplitAlphaOverTheirPoints) {
+TEST(Sweep, GridsSplitAlphaOverTheirPoints) {
   // The die's six faces, each 1/6: not monotone in k, so PESTIM at alpha / 6 for each.
   CheckOptions options;
   options.delta = 0.02;
@@ -113,7 +113,7 @@ TEST(Explore, GridsSplitAlphaOverTheirPoints) {
   }
 }
 
-TEST(Explore, SharedRunsGiveEachPointTheAnswerItGetsAlone) {
+TEST(Sweep, SharedRunsGiveEachPointTheAnswerItGetsAlone) {
   // Sequential tests stop at different runs for different points; sharing runs must not
   // change what any point sees.
   CheckOptions options;
@@ -134,7 +134,7 @@ TEST(Explore, SharedRunsGiveEachPointTheAnswerItGetsAlone) {
   }
 }
 
-TEST(Explore, ThreadCountsGiveTheSameSweeps) {
+TEST(Sweep, ThreadCountsGiveTheSameSweeps) {
   const std::string queries =
       "param t = 0:100:10\nparam k = 1:4:1\n"
       "P=? [ F[0,t] Channel.id_channel > 2 ]\n"
