@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "bipc/output_file.h"
 #include "smc/check/answer.h"
 #include "smc/check/ordered_sampler.h"
 #include "smc/check/query_runs.h"
@@ -16,6 +17,19 @@ namespace {
 
 double value_of(const monitors::Value& v, const monitors::Bindings& bindings) {
   return v.is_name() ? bindings.at(v.name) : v.number;
+}
+
+/// Keeps run `index`'s trace in `folder`; on failure every open answer gets the error.
+bool save_trace(const std::string& folder, std::size_t query, std::uint64_t index,
+                const std::string& trace, std::vector<QueryResult>& results) {
+  const std::string path = folder + "/query-" + std::to_string(query + 1) + "-run-" +
+                           std::to_string(index) + ".jsonl";
+  std::string error;
+  if (bipc::write_file_atomically(path, trace, error)) return true;
+  for (QueryResult& r : results) {
+    if (r.error.empty()) r.error = "--save-traces: " + error;
+  }
+  return false;
 }
 
 /// What each point of a query is judged at.
@@ -59,7 +73,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   simulate.engine = options.engine;
   simulate.seed = options.seed;
   simulate.limit = options.max_steps;
-  simulate.silent = true;
+  simulate.silent = options.save_traces.empty();
+  simulate.trace = engines::TraceFormat::Jsonl;
   const unsigned threads = std::max(1u, options.threads);
   std::vector<std::unique_ptr<QueryRuns>> workers;
   for (unsigned w = 0; w < threads; ++w) {
@@ -99,11 +114,15 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     }
     options.progress(p);
   };
-  OrderedSampler<std::vector<Outcome>> sampler(
+  OrderedSampler<RunOutcomes> sampler(
       threads, [&](unsigned w, std::uint64_t index) { return workers[w]->run(index, done.get()); });
-  sampler.run(0, [&](const std::vector<Outcome>& outcomes) {
+  sampler.run(0, [&](const RunOutcomes& outcomes) {
+    if (!options.save_traces.empty() && !save_trace(options.save_traces, query.index, consumed,
+                                                    outcomes.trace, results)) {
+      return false;
+    }
     for (std::size_t p = 0; p < n; ++p) {
-      if (done[p].load(std::memory_order_relaxed) || answers[p].take(outcomes[p])) continue;
+      if (done[p].load(std::memory_order_relaxed) || answers[p].take(outcomes.points[p])) continue;
       done[p].store(true, std::memory_order_relaxed);
       --open;
     }

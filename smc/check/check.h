@@ -46,6 +46,10 @@ struct CheckOptions {
   std::uint64_t max_steps = 1'000'000;  // per run
   UndecidedPolicy undecided = UndecidedPolicy::Error;
   engines::EngineKind engine = engines::EngineKind::Optimised;
+  /// A folder to keep the trace of every run an answer took (JSON lines, as `smcbip simulate
+  /// --trace jsonl` writes them, each ending where its verdicts were known), named
+  /// query-<q>-run-<i>.jsonl with q counted from 1 in the file and i the run index; empty: none.
+  std::string save_traces;
   /// Called now and then (about ten times a second) while a query's runs are made.
   std::function<void(const Progress&)> progress;
 };

@@ -47,7 +47,8 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::SimulateOpti
       query_(query),
       observer_(std::make_unique<Observer>()),
       nothing_(std::make_unique<NullBuffer>()),
-      sink_(nothing_.get()) {
+      sink_(nothing_.get()),
+      traced_(!options.silent) {
   if (!simulator_.problem().empty()) throw std::invalid_argument(simulator_.problem());
   const monitors::Query& q = *query.query;
   if (query.swept) {
@@ -70,7 +71,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::SimulateOpti
 
 QueryRuns::~QueryRuns() = default;
 
-std::vector<Outcome> QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
+RunOutcomes QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
   const std::size_t n = query_.points.size();
   std::vector<engines::RunObserver*> observers;
   if (sweep_) {
@@ -88,9 +89,13 @@ std::vector<Outcome> QueryRuns::run(std::uint64_t index, const std::atomic<bool>
     observers.push_back(extrema_[p].get());
   }
   observer_->start(std::move(observers));
-  simulator_.run(index, engines::RunStreams{sink_, sink_}, observer_.get());
+  trace_.str({});
+  simulator_.run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
-  std::vector<Outcome> outcomes(n);
+  RunOutcomes made;
+  if (traced_) made.trace = trace_.str();
+  std::vector<Outcome>& outcomes = made.points;
+  outcomes.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
     if (done[p].load(std::memory_order_relaxed) && !sweep_) continue;
     if (sweep_) {
@@ -103,7 +108,7 @@ std::vector<Outcome> QueryRuns::run(std::uint64_t index, const std::atomic<bool>
                      extrema_[p]->value().value_or(std::numeric_limits<double>::quiet_NaN())};
     }
   }
-  return outcomes;
+  return made;
 }
 
 }  // namespace smcbip::smc

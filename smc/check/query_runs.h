@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <streambuf>
 #include <string>
 #include <vector>
@@ -26,6 +27,12 @@ struct QueryPoints {
   std::optional<std::string> swept;
 };
 
+/// One run's outcome for each point of its query, and its trace when traces are kept.
+struct RunOutcomes {
+  std::vector<Outcome> points;
+  std::string trace;
+};
+
 /// Makes runs of a query's model on one thread and judges them for its points.
 class QueryRuns {
  public:
@@ -35,8 +42,9 @@ class QueryRuns {
   ~QueryRuns();
 
   /// Run `index`, judged for the points whose `done` flag is clear (the others get Undecided);
-  /// it stops once every one of them is decided.
-  std::vector<Outcome> run(std::uint64_t index, const std::atomic<bool>* done);
+  /// it stops once every one of them is decided. Its trace is kept when `options.silent` was
+  /// false.
+  RunOutcomes run(std::uint64_t index, const std::atomic<bool>* done);
 
  private:
   class Observer;
@@ -49,6 +57,8 @@ class QueryRuns {
   std::unique_ptr<Observer> observer_;
   std::unique_ptr<std::streambuf> nothing_;
   std::ostream sink_;
+  bool traced_;
+  std::ostringstream trace_;
 };
 
 }  // namespace smcbip::smc

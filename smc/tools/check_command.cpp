@@ -39,6 +39,17 @@ bool writable_outputs(const CheckCommand& check) {
   return true;
 }
 
+/// The folder of --save-traces, made if missing.
+bool trace_folder(const CheckCommand& check) {
+  if (check.options.save_traces.empty()) return true;
+  std::error_code error;
+  std::filesystem::create_directories(check.options.save_traces, error);
+  if (!error && std::filesystem::is_directory(check.options.save_traces)) return true;
+  std::cerr << "smcbip: error: --save-traces: cannot make the folder " << check.options.save_traces
+            << (error ? ": " + error.message() : "") << "\n";
+  return false;
+}
+
 /// `--plot` needs a query over a parameter.
 bool plottable(const CheckCommand& check, const monitors::PropertyFile& file) {
   if (check.plot.empty()) return true;
@@ -106,6 +117,8 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62))
       ->capture_default_str();
   command.add_flag("--json", check.json, "print the results as one JSON object");
+  command.add_option("--save-traces", o.save_traces,
+                     "keep the trace of every run the answers took in this folder (JSON lines)");
   command.add_option("--param", check.parameters,
                      "a parameter's values, NAME=start:stop:step or NAME={v1,v2,...} (replaces "
                      "the file's declaration of NAME)");
@@ -133,7 +146,9 @@ int run_check(CheckCommand check) {
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;
   }
-  if (!plottable(check, parsed.file) || !writable_outputs(check)) return kInputError;
+  if (!plottable(check, parsed.file) || !writable_outputs(check) || !trace_folder(check)) {
+    return kInputError;
+  }
   const std::optional<std::string> hash = hash_of(*system, check);
   if (!hash) return kInputError;
   std::optional<ProgressBar> progress;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# smcbip explore's files: the plot is well-formed SVG with one marker per point and a band per
-# curve, the CSV has a row per point, and a run that fails writes neither.
+# smcbip explore's and check's files: the plot is well-formed SVG with one marker per point and
+# a band per curve, the CSV has a row per point, a refused command writes neither, and the traces
+# --save-traces keeps are the runs the answer counted (smcbip monitor judges them the same).
 #
 # Usage: explore_outputs.sh BIN_DIR SOURCE_DIR
 set -euo pipefail
@@ -52,4 +53,19 @@ if "$bin/smcbip" explore "$source/models/channel.bip" "$out/sweep.mtl" --root 'S
   exit 1
 fi
 [[ ! -e $out/failed.svg ]] || { echo "explore_outputs: a failed run wrote its plot" >&2; exit 1; }
+# Every run an estimate took is kept, and judged again from its trace it counts the same.
+printf 'P=? [ F[0,100] Channel.lost > 0 ]\n' >"$out/one.mtl"
+"$bin/smcbip" check "$source/models/channel.bip" "$out/one.mtl" --root 'System()' --delta 0.1 \
+  --save-traces "$out/traces" --json >"$out/check.json"
+"$bin/smcbip" monitor "$out/one.mtl" --trace "$out"/traces/*.jsonl \
+  --model "$source/models/channel.bip" --root 'System()' --json >"$out/monitor.json" ||
+  [[ $? -eq 1 ]] # some runs are false
+python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+answer = json.load(open(f"{out}/check.json"))["results"][0]
+verdicts = [r["verdict"] for r in json.load(open(f"{out}/monitor.json"))["results"]]
+assert len(verdicts) == answer["samples"], (len(verdicts), answer["samples"])
+assert abs(verdicts.count(True) / len(verdicts) - answer["estimate"]) < 1e-12
+PY
 echo "explore_outputs: ok"
