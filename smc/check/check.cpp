@@ -22,8 +22,8 @@ double value_of(const monitors::Value& v, const monitors::Bindings& bindings) {
 /// Keeps run `index`'s trace in `folder`; on failure every open answer gets the error.
 bool save_trace(const std::string& folder, std::size_t query, std::uint64_t index,
                 const std::string& trace, std::vector<QueryResult>& results) {
-  const std::string path = folder + "/query-" + std::to_string(query + 1) + "-run-" +
-                           std::to_string(index) + ".jsonl";
+  const std::string path =
+      folder + "/query-" + std::to_string(query + 1) + "-run-" + std::to_string(index) + ".jsonl";
   std::string error;
   if (bipc::write_file_atomically(path, trace, error)) return true;
   for (QueryResult& r : results) {
@@ -114,11 +114,13 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     }
     options.progress(p);
   };
-  OrderedSampler<RunOutcomes> sampler(
-      threads, [&](unsigned w, std::uint64_t index) { return workers[w]->run(index, done.get()); });
+  OrderedSampler<RunOutcomes> sampler(threads,
+                                      [&](unsigned w, std::uint64_t index, RunOutcomes& made) {
+                                        workers[w]->run(index, done.get(), made);
+                                      });
   sampler.run(0, [&](const RunOutcomes& outcomes) {
-    if (!options.save_traces.empty() && !save_trace(options.save_traces, query.index, consumed,
-                                                    outcomes.trace, results)) {
+    if (!options.save_traces.empty() &&
+        !save_trace(options.save_traces, query.index, consumed, outcomes.trace, results)) {
       return false;
     }
     for (std::size_t p = 0; p < n; ++p) {

@@ -71,7 +71,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::SimulateOpti
 
 QueryRuns::~QueryRuns() = default;
 
-RunOutcomes QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
+void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutcomes& made) {
   const std::size_t n = query_.points.size();
   std::vector<engines::RunObserver*> observers;
   if (sweep_) {
@@ -92,10 +92,9 @@ RunOutcomes QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
   trace_.str({});
   simulator_.run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
-  RunOutcomes made;
   if (traced_) made.trace = trace_.str();
   std::vector<Outcome>& outcomes = made.points;
-  outcomes.resize(n);
+  outcomes.assign(n, Outcome{});
   for (std::size_t p = 0; p < n; ++p) {
     if (done[p].load(std::memory_order_relaxed) && !sweep_) continue;
     if (sweep_) {
@@ -108,7 +107,6 @@ RunOutcomes QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done) {
                      extrema_[p]->value().value_or(std::numeric_limits<double>::quiet_NaN())};
     }
   }
-  return made;
 }
 
 }  // namespace smcbip::smc

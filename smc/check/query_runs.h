@@ -42,9 +42,9 @@ class QueryRuns {
   ~QueryRuns();
 
   /// Run `index`, judged for the points whose `done` flag is clear (the others get Undecided);
-  /// it stops once every one of them is decided. Its trace is kept when `options.silent` was
-  /// false.
-  RunOutcomes run(std::uint64_t index, const std::atomic<bool>* done);
+  /// it stops once every one of them is decided. Its outcomes and (when `options.silent` was
+  /// false) its trace go to `made`, whose storage is reused.
+  void run(std::uint64_t index, const std::atomic<bool>* done, RunOutcomes& made);
 
  private:
   class Observer;
