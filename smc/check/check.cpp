@@ -78,7 +78,7 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   const unsigned threads = std::max(1u, options.threads);
   std::vector<std::unique_ptr<QueryRuns>> workers;
   for (unsigned w = 0; w < threads; ++w) {
-    workers.push_back(std::make_unique<QueryRuns>(system, simulate, query));
+    workers.push_back(std::make_unique<QueryRuns>(system, options.compiled, simulate, query));
   }
 
   using K = monitors::Query::Kind;

@@ -11,6 +11,7 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/engines.h"
+#include "engines/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/stats/interval_estimation.h"
 
@@ -46,6 +47,9 @@ struct CheckOptions {
   std::uint64_t max_steps = 1'000'000;  // per run
   UndecidedPolicy undecided = UndecidedPolicy::Error;
   engines::EngineKind engine = engines::EngineKind::Optimised;
+  /// Runs the model `bipc gen` compiled into this plugin rather than interpreting the IR (the
+  /// same model: its hash must be the IR's, which the caller checks); null: the interpreter.
+  const engines::PluginEntry* compiled = nullptr;
   /// A folder to keep the trace of every run an answer took (JSON lines, as `smcbip simulate
   /// --trace jsonl` writes them, each ending where its verdicts were known), named
   /// query-<q>-run-<i>.jsonl with q counted from 1 in the file and i the run index; empty: none.

@@ -41,15 +41,21 @@ class QueryRuns::Observer final : public engines::RunObserver {
   std::vector<engines::RunObserver*> observers_, watching_;
 };
 
-QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::SimulateOptions& options,
-                     const QueryPoints& query)
-    : simulator_(system, options, engines::Externs::with_builtins()),
+QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry* compiled,
+                     const engines::SimulateOptions& options, const QueryPoints& query)
+    : externs_(engines::Externs::with_builtins()),
       query_(query),
       observer_(std::make_unique<Observer>()),
       nothing_(std::make_unique<NullBuffer>()),
       sink_(nothing_.get()),
       traced_(!options.silent) {
-  if (!simulator_.problem().empty()) throw std::invalid_argument(simulator_.problem());
+  if (compiled) {
+    compiled->register_externs(externs_);
+    simulator_ = std::make_unique<engines::Simulator>(compiled->model(), options, externs_);
+  } else {
+    simulator_ = std::make_unique<engines::Simulator>(system, options, externs_);
+  }
+  if (!simulator_->problem().empty()) throw std::invalid_argument(simulator_->problem());
   const monitors::Query& q = *query.query;
   if (query.swept) {
     double largest = 0;
@@ -90,7 +96,7 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   }
   observer_->start(std::move(observers));
   trace_.str({});
-  simulator_.run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
+  simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
   if (traced_) made.trace = trace_.str();
   std::vector<Outcome>& outcomes = made.points;

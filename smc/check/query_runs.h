@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "engines/engines.h"
+#include "engines/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/check/answer.h"
 
@@ -37,8 +38,9 @@ struct RunOutcomes {
 class QueryRuns {
  public:
   /// Throws std::invalid_argument when the model cannot run.
-  QueryRuns(const bipc::ir::System& system, const engines::SimulateOptions& options,
-            const QueryPoints& query);
+  /// With `compiled`, runs are made by the generated model of that plugin.
+  QueryRuns(const bipc::ir::System& system, const engines::PluginEntry* compiled,
+            const engines::SimulateOptions& options, const QueryPoints& query);
   ~QueryRuns();
 
   /// Run `index`, judged for the points whose `done` flag is clear (the others get Undecided);
@@ -49,7 +51,8 @@ class QueryRuns {
  private:
   class Observer;
 
-  engines::Simulator simulator_;
+  engines::Externs externs_;
+  std::unique_ptr<engines::Simulator> simulator_;
   const QueryPoints& query_;
   std::vector<std::unique_ptr<monitors::RunMonitor>> monitors_;  // path formulas, per point
   std::vector<std::unique_ptr<monitors::RunExtremum>> extrema_;  // expectations, per point

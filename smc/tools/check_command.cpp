@@ -7,6 +7,7 @@
 
 #include "bipc/ir/model_hash.h"
 #include "bipc/output_file.h"
+#include "engines/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/progress_bar.h"
@@ -71,6 +72,26 @@ std::optional<std::string> hash_of(const bipc::ir::System& system, const CheckCo
   }
 }
 
+/// The plugin of --compiled, if given, once it is known to hold the model `hash` names.
+bool load_compiled(CheckCommand& check, const std::string& hash) {
+  if (check.compiled.empty()) return true;
+  engines::Plugin plugin;
+  try {
+    plugin = engines::load_plugin(check.compiled);
+  } catch (const engines::PluginError& e) {
+    std::cerr << "smcbip: error: --compiled: " << e.message << "\n";
+    return false;
+  }
+  if (hash != plugin.entry->model_hash) {
+    std::cerr << "smcbip: error: " << plugin.path << " holds another model (hash "
+              << plugin.entry->model_hash << ") than " << check.model.file << " (hash " << hash
+              << "); generate and build it again\n";
+    return false;
+  }
+  check.options.compiled = plugin.entry;
+  return true;
+}
+
 bool write_outputs(const CheckCommand& check, const Report& report) {
   bool ok = true;
   const auto write = [&](const std::string& path, const std::string& text) {
@@ -117,6 +138,9 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 62))
       ->capture_default_str();
   command.add_flag("--json", check.json, "print the results as one JSON object");
+  command.add_option("--compiled", check.compiled,
+                     "run the model compiled by bipc gen (its plugin, or the folder of its built "
+                     "project), which must be MODEL");
   command.add_option("--save-traces", o.save_traces,
                      "keep the trace of every run the answers took in this folder (JSON lines)");
   command.add_option("--param", check.parameters,
@@ -150,7 +174,7 @@ int run_check(CheckCommand check) {
     return kInputError;
   }
   const std::optional<std::string> hash = hash_of(*system, check);
-  if (!hash) return kInputError;
+  if (!hash || !load_compiled(check, *hash)) return kInputError;
   std::optional<ProgressBar> progress;
   if (stderr_is_terminal()) {
     progress.emplace(std::cerr, parsed.file.queries.size());

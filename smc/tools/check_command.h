@@ -19,6 +19,7 @@ struct CheckCommand {
   bool json = false;
   std::vector<std::string> parameters;  // --param NAME=values
   smc::CheckOptions options;
+  std::string compiled;  // --compiled: a plugin, or the folder of a built `bipc gen` project
   bool explore = false;
   std::string plot, csv;  // explore: files to write
 };

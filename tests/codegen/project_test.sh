@@ -87,6 +87,18 @@ same "channel FILE --compiled" "$bin/smcbip" simulate "$channel" --root 'System(
   --limit 300 -- "$bin/smcbip" simulate "$channel" --root 'System()' --compiled "$work/channel" \
   --seed 6 --limit 300
 
+# Statistical checking on the compiled model takes the same runs as on the interpreter.
+check_json() {
+  "$bin/smcbip" check "$channel" "$src/models/channel.mtl" --root 'System()' --delta 0.05 \
+    --seed 3 --threads 2 --json "$@" | grep -v '"seconds"'
+}
+check_json > "$work/check_interpreted.json" || [[ $? == 1 ]]
+check_json --compiled "$work/channel" > "$work/check_compiled.json" || [[ $? == 1 ]]
+cmp -s "$work/check_interpreted.json" "$work/check_compiled.json" ||
+  fail "smcbip check --compiled answers differ: $(diff "$work/check_interpreted.json" \
+    "$work/check_compiled.json" | head -10)"
+grep -q '"samples"' "$work/check_compiled.json" || fail "smcbip check --compiled: no results"
+
 code=0
 "$bin/smcbip" simulate "$src/models/two_exponentials.bip" --root 'System()' \
   --compiled "$work/channel" --limit 3 > /dev/null 2> "$work/other.err" || code=$?
