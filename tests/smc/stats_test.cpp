@@ -10,18 +10,13 @@
 #include <random>
 
 #include "smc/smc.h"
+#include "tests/smc/repetitions.h"
 
 namespace smcbip::smc {
 namespace {
 
-int repetitions() { return std::getenv("SMCBIP_SLOW_STATS") != nullptr ? 1000 : 200; }
-
-/// The most failures among `n` trials of probability at most `rate` that a sound method shows
-/// but for a chance below 0.2%: the mean plus three standard deviations (plus one).
-double slack_bound(int n, double rate) {
-  const double mean = n * rate;
-  return mean + 3 * std::sqrt(n * rate * (1 - rate)) + 1;
-}
+using tests::repetitions;
+using tests::slack_bound;
 
 TEST(SamplingPlans, SingleSamplingPlanMatchesPublishedVectors) {
   const SamplingPlan strict = single_sampling_plan(0.5, 0.05, 0.01, 0.01);
