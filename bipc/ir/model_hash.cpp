@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "bipc/ir/detail/sha256.h"
@@ -40,7 +41,8 @@ std::string read_source(const fs::path& path, const std::string& name) {
   return contents.str();
 }
 
-/// Every source location under `data` set to null (see model_hash.h).
+/// Every source location under `data` set to null, every empirical CDF file named by its file
+/// name alone (see model_hash.h).
 void drop_locations(nlohmann::json& data) {
   if (data.is_array()) {
     for (nlohmann::json& item : data) drop_locations(item);
@@ -50,6 +52,8 @@ void drop_locations(nlohmann::json& data) {
   for (auto& [key, value] : data.items()) {
     if (key == "loc") {
       value = nullptr;
+    } else if (key == "custom_file" && value.is_string()) {
+      value = fs::path(value.get<std::string>()).filename().string();
     } else {
       drop_locations(value);
     }
@@ -98,6 +102,16 @@ ExternSources extern_sources_of(const System& system, const std::vector<std::str
         sources.push_back({header, candidate.string(), read_source(candidate, header)});
         break;
       }
+    }
+  }
+  std::set<std::string> cdfs;
+  for (const AtomType& type : system.atom_types) {
+    for (const Port& port : type.ports) {
+      if (!port.stochastic || port.stochastic->custom_file.empty()) continue;
+      const std::string& file = port.stochastic->custom_file;
+      if (!cdfs.insert(file).second) continue;
+      sources.push_back(
+          {"cdf/" + fs::path(file).filename().string(), file, read_source(file, file)});
     }
   }
   return sources;

@@ -25,7 +25,8 @@ using ExternSources = std::vector<ExternSource>;
 ///
 /// where u64le(n) is n as 8 bytes, least significant first, and normalised() drops what only
 /// says where the model is stored or written: every source location ("loc") becomes null,
-/// `cpp_sources` keep their file names alone and `cpp_include_dirs` is emptied. So a model
+/// `cpp_sources` and empirical CDF files (`custom_file`) keep their file names alone and
+/// `cpp_include_dirs` is emptied. So a model
 /// keeps its hash when its files move or gain comments, and changes it with anything that
 /// changes what it does or the bytes of its extern code. The CBOR is one data item with
 /// definite lengths, so it ends where its own header says; every later field is
@@ -48,7 +49,10 @@ struct ExternSourceError {
 ///    `cpp_include_dirs` (the naming packages' folders), then of `search_dirs` (the -I folders,
 ///    as the front end searches packages), that holds it; an absolute name is read as is.
 ///    A relative header found in none of them is taken for a header of the C++ toolchain
-///    (`stdio.h`, `unistd.h`) and left out: it is no part of the model.
+///    (`stdio.h`, `unistd.h`) and left out: it is no part of the model;
+///  - each empirical CDF file of a `custom` stochastic port (once, in the order of the atom
+///    types and their ports), read from the path the IR holds and named `cdf/` + its file
+///    name: the dates it gives are part of what the model does.
 /// Throws ExternSourceError for a source file, or an absolute header, that is missing or
 /// unreadable.
 ExternSources extern_sources_of(const System& system, const std::vector<std::string>& search_dirs);

@@ -68,6 +68,13 @@ std::string normalised_cbor(const ir::System& s) {
     source = fs::path(source.get<std::string>()).filename().string();
   }
   data["cpp_include_dirs"] = nlohmann::json::array();
+  for (auto& type : data["atom_types"]) {
+    for (auto& port : type["ports"]) {
+      if (!port.contains("stochastic") || port["stochastic"].is_null()) continue;
+      auto& file = port["stochastic"]["custom_file"];
+      file = fs::path(file.get<std::string>()).filename().string();
+    }
+  }
   const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(data);
   return {cbor.begin(), cbor.end()};
 }
@@ -242,6 +249,59 @@ TEST(ModelHash, ExternSourcesAreReadFromTheModelsFolders) {
     EXPECT_EQ(fs::path(e.path), dir.path() / "model" / "impl" / "lamp.cpp");
     EXPECT_NE(e.message.find("no such file"), std::string::npos) << e.message;
   }
+}
+
+constexpr const char* kCustomModel =
+    "package delays\n"
+    "  port type Sig()\n"
+    "  atom type A()\n"
+    "    clock x unit millisecond\n"
+    "    @stochastic(dist=\"custom\", clk=x, param=\"data/delay.cdf\")\n"
+    "    port Sig go()\n"
+    "    @stochastic(dist=\"custom\", clk=x, param=\"data/delay.cdf\")\n"
+    "    port Sig stop()\n"
+    "    place s\n"
+    "    initial to s do { x = 0; }\n"
+    "    on go from s to s do { x = 0; }\n"
+    "    on stop from s to s do { x = 0; }\n"
+    "  end\n"
+    "  compound type Top()\n"
+    "    component A a()\n"
+    "  end\n"
+    "end\n";
+
+TEST(ModelHash, CoversTheContentsOfEmpiricalDistributions) {
+  const TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  const auto load = [&](const fs::path& model) {
+    std::string messages;
+    std::optional<ir::System> system = ir_data_test::load_system(model, "Top()", {}, &messages);
+    EXPECT_TRUE(system.has_value()) << messages;
+    return system;
+  };
+  write(dir.path() / "one" / "delays.bip", kCustomModel);
+  write(dir.path() / "one" / "data" / "delay.cdf", "0 0\n10 1\n");
+  const std::optional<ir::System> system = load(dir.path() / "one" / "delays.bip");
+  ASSERT_TRUE(system);
+  const ir::ExternSources sources = ir::extern_sources_of(*system, {});
+  ASSERT_EQ(sources.size(), 1u);  // two ports, one file
+  EXPECT_EQ(sources[0].name, "cdf/delay.cdf");
+  EXPECT_EQ(sources[0].contents, "0 0\n10 1\n");
+  const std::string hash = ir::model_hash(*system, sources);
+
+  // Elsewhere, the same files: the same model.
+  write(dir.path() / "two" / "delays.bip", kCustomModel);
+  write(dir.path() / "two" / "data" / "delay.cdf", "0 0\n10 1\n");
+  const std::optional<ir::System> moved = load(dir.path() / "two" / "delays.bip");
+  ASSERT_TRUE(moved);
+  EXPECT_EQ(ir::model_hash(*moved, ir::extern_sources_of(*moved, {})), hash);
+
+  // Other dates: another model.
+  write(dir.path() / "two" / "data" / "delay.cdf", "0 0\n20 1\n");
+  EXPECT_NE(ir::model_hash(*moved, ir::extern_sources_of(*moved, {})), hash);
+
+  fs::remove(dir.path() / "two" / "data" / "delay.cdf");
+  EXPECT_THROW(ir::extern_sources_of(*moved, {}), ir::ExternSourceError);
 }
 
 }  // namespace
