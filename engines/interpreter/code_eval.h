@@ -39,7 +39,7 @@ struct Frame {
 };
 
 /// A run-time fault of model code (division by zero, unknown extern), reported as an error of
-/// the run naming the atom or connector.
+/// the run naming the atom or connector, with kInputError: the model's fault, not the tool's.
 struct CodeFault {
   std::string message;
 };

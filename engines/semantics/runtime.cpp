@@ -158,7 +158,7 @@ bool Runtime::initialize() {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(kInternalError, fault.message);
+    return fail(kInputError, fault.message);
   }
   return check_compound_priority_cycles();
 }
@@ -441,7 +441,7 @@ bool Runtime::compute_items() {
     compute_values(full);
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
-    return fail(kInternalError, fault.message);
+    return fail(kInputError, fault.message);
   } catch (const UnsupportedRun& unsupported) {
     cache_.invalidate_all();
     return fail(kInputError, unsupported.message);
@@ -605,7 +605,7 @@ bool Runtime::restore(const RunState& state) {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(kInternalError, fault.message);
+    return fail(kInputError, fault.message);
   }
   return true;
 }
@@ -619,7 +619,7 @@ bool Runtime::execute(const Item& item, TimeValue at) {
     if (item.kind == Item::Kind::External) return fire_extern(item);
     return fire_port(item.atom, item.port);
   } catch (const CodeFault& fault) {
-    return fail(kInternalError, fault.message);
+    return fail(kInputError, fault.message);
   }
 }
 
@@ -630,7 +630,7 @@ bool Runtime::write_data(Index atom, Index slot, Val value) {
     if (!check_invariants(atom) || !run_internal_transitions(atom)) return false;
     return state_.resume_pending[atom] || update_atom(atom);
   } catch (const CodeFault& fault) {
-    return fail(kInternalError, fault.message);
+    return fail(kInputError, fault.message);
   }
 }
 

@@ -135,7 +135,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
     try {
       p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
-      s.fail(kInternalError, f.message);
+      s.fail(kInputError, f.message);
     } catch (...) {
       // A user extern declared pure threw: no error channel on a worker thread.
       std::terminate();
@@ -152,7 +152,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
       return false;
     }
   }
-  if (fault) return fail(kInternalError, *fault);
+  if (fault) return fail(kInputError, *fault);
   return true;
 }
 

@@ -118,7 +118,11 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
                                       [&](unsigned w, std::uint64_t index, RunOutcomes& made) {
                                         workers[w]->run(index, done.get(), made);
                                       });
+  std::string first_failure;  // why a run ended in an error, for queries that fail for it
   sampler.run(0, [&](const RunOutcomes& outcomes) {
+    if (!outcomes.failure.empty() && first_failure.empty()) {
+      first_failure = "run " + std::to_string(consumed) + " ended in an error: " + outcomes.failure;
+    }
     if (!options.save_traces.empty() &&
         !save_trace(options.save_traces, query.index, consumed, outcomes.trace, results)) {
       return false;
@@ -137,6 +141,9 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   for (std::size_t p = 0; p < n; ++p) {
     answers[p].finish();
     results[p].seconds = seconds;
+    if (!results[p].error.empty() && !first_failure.empty()) {
+      results[p].error += " (" + first_failure + ")";
+    }
   }
   return results;
 }

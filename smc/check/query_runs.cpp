@@ -34,10 +34,14 @@ class QueryRuns::Observer final : public engines::RunObserver {
   }
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
+    failure_ = end == engines::RunEnd::Error ? message : std::string();
     for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 
+  const std::string& failure() const { return failure_; }
+
  private:
+  std::string failure_;
   std::vector<engines::RunObserver*> observers_, watching_;
 };
 
@@ -99,6 +103,7 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
   if (traced_) made.trace = trace_.str();
+  made.failure = observer_->failure();
   std::vector<Outcome>& outcomes = made.points;
   outcomes.assign(n, Outcome{});
   for (std::size_t p = 0; p < n; ++p) {

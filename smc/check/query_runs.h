@@ -32,6 +32,7 @@ struct QueryPoints {
 struct RunOutcomes {
   std::vector<Outcome> points;
   std::string trace;
+  std::string failure;  // the error the run ended in, if it did
 };
 
 /// Makes runs of a query's model on one thread and judges them for its points.
