@@ -6,29 +6,13 @@
 #include <string>
 
 #include "engines/engines.h"
+#include "tests/engines/lock_model.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::engines {
 namespace {
 
-// From s0 the atom moves to s1 (no transition, no invariant: a deadlock) or to s2, whose
-// invariant bounds the time that may pass (no transition: a time-lock).
-constexpr const char* kModel = R"(package explore_model
-  port type Sig()
-  atom type A()
-    clock x unit millisecond
-    port Sig a(), b()
-    place s0, s1, s2
-    initial to s0 do { x = 0; }
-    on a from s0 to s1
-    on b from s0 to s2
-    invariant stay_short at s2 provided (x <= 3)
-  end
-  compound type Top()
-    component A one()
-  end
-end
-)";
+constexpr const char* kModel = tests::kDeadlockOrTimeLock;
 
 std::string exploration_line(EngineKind engine) {
   const std::optional<bipc::ir::System> system = tests::load_model_text(kModel, "Top()");

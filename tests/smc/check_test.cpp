@@ -11,6 +11,7 @@
 #include <string>
 
 #include "smc/smc.h"
+#include "tests/engines/lock_model.h"
 #include "tests/smc/check_fixtures.h"
 
 namespace smcbip::smc {
@@ -150,29 +151,11 @@ TEST(Check, RunsLeftUndecidedAreCountedAndReported) {
   EXPECT_GT(failed.at(0).undecided, failed.at(0).samples / 2);  // counted, as failures
 }
 
-// From s0 the atom moves to s1 (a deadlock) or to s2, whose invariant stops time at x = 3 (a
-// time-lock), both at time 0.
-constexpr const char* kLocks = R"(package locks
-  port type Sig()
-  atom type A()
-    clock x unit millisecond
-    port Sig a(), b()
-    place s0, s1, s2
-    initial to s0 do { x = 0; }
-    on a from s0 to s1
-    on b from s0 to s2
-    invariant stay_short at s2 provided (x <= 3)
-  end
-  compound type Top()
-    component A one()
-  end
-end
-)";
-
 TEST(Check, DeadlocksAndTimeLocksInsideABoundNeverHang) {
   // F[10,100] one.s1: a deadlocked run keeps s1 forever and holds; a time-locked one ends at
   // time 3, before the window opens, and is undecided, never read as false.
-  const std::optional<bipc::ir::System> system = smcbip::tests::load_model_text(kLocks, "Top()");
+  const std::optional<bipc::ir::System> system =
+      smcbip::tests::load_model_text(smcbip::tests::kDeadlockOrTimeLock, "Top()");
   ASSERT_TRUE(system);
   const monitors::PropertyFile file = tests::properties("P=? [ F[10,100] one.s1 ]\n", *system);
   CheckOptions options;
