@@ -4,10 +4,13 @@
 // variants repeat each case 1,000 times; the quick ones 200 times.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
+#include <tuple>
+#include <vector>
 
 #include "smc/smc.h"
 #include "tests/smc/repetitions.h"
@@ -25,6 +28,43 @@ TEST(SamplingPlans, SingleSamplingPlanMatchesPublishedVectors) {
   const SamplingPlan loose = single_sampling_plan(0.5, 0.05, 0.05, 0.05);
   EXPECT_EQ(loose.n, 269u);
   EXPECT_EQ(loose.c, 134u);
+}
+
+/// P[X <= c | p] for c = 0..n, X binomial(n, p), summed from the probability mass function
+/// (by log-gamma): a computation of its own, not the library's.
+std::vector<double> binomial_cdf(int n, double p) {
+  std::vector<double> cdf(n + 1);
+  double sum = 0;
+  for (int k = 0; k <= n; ++k) {
+    sum += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) +
+                    k * std::log(p) + (n - k) * std::log1p(-p));
+    cdf[k] = sum;
+  }
+  return cdf;
+}
+
+TEST(SamplingPlans, SingleSamplingPlanMatchesASearchOfItsOwn) {
+  // The smallest n for which some c keeps both errors within bounds, found by trying every
+  // n and c; the plan's c must be one of those that do.
+  for (const auto& [theta, delta, alpha, beta] :
+       {std::tuple{0.5, 0.05, 0.01, 0.01}, std::tuple{0.3, 0.05, 0.05, 0.1},
+        std::tuple{0.9, 0.03, 0.05, 0.05}, std::tuple{0.1, 0.02, 0.01, 0.05}}) {
+    const SamplingPlan plan = single_sampling_plan(theta, delta, alpha, beta);
+    int smallest = -1;
+    std::vector<int> valid;
+    for (int n = 1; smallest < 0 && n <= 5000; ++n) {
+      const std::vector<double> at_p0 = binomial_cdf(n, theta + delta);
+      const std::vector<double> at_p1 = binomial_cdf(n, theta - delta);
+      for (int c = 0; c < n; ++c) {
+        // A margin of 1e-9 on each side absorbs rounding: the test must not hinge on it.
+        if (at_p0[c] <= alpha + 1e-9 && 1 - at_p1[c] <= beta + 1e-9) valid.push_back(c);
+      }
+      if (!valid.empty()) smallest = n;
+    }
+    EXPECT_EQ(static_cast<int>(plan.n), smallest) << theta << " " << delta;
+    EXPECT_NE(std::find(valid.begin(), valid.end(), static_cast<int>(plan.c)), valid.end())
+        << "c = " << plan.c << " for theta " << theta;
+  }
 }
 
 TEST(SamplingPlans, ChernoffSampleSizes) {
