@@ -11,6 +11,7 @@
 #include "smc/check/answer.h"
 #include "smc/check/ordered_sampler.h"
 #include "smc/check/query_runs.h"
+#include "smc/check/remote_runs.h"
 
 namespace smcbip::smc {
 namespace {
@@ -75,7 +76,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   simulate.limit = options.max_steps;
   simulate.silent = options.save_traces.empty();
   simulate.trace = engines::TraceFormat::Jsonl;
-  const unsigned threads = std::max(1u, options.threads);
+  const bool serving = options.remote && options.remote->serving();
+  const unsigned threads = serving ? 1u : std::max(1u, options.threads);
   std::vector<std::unique_ptr<QueryRuns>> workers;
   for (unsigned w = 0; w < threads; ++w) {
     workers.push_back(std::make_unique<QueryRuns>(system, options.compiled, simulate, query));
@@ -114,12 +116,14 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     }
     options.progress(p);
   };
-  OrderedSampler<RunOutcomes> sampler(threads,
-                                      [&](unsigned w, std::uint64_t index, RunOutcomes& made) {
-                                        workers[w]->run(index, done.get(), made);
-                                      });
+  if (serving) {
+    options.remote->serve(n, done.get(), [&](std::uint64_t index, RunOutcomes& made) {
+      workers[0]->run(index, done.get(), made);
+    });
+    return results;
+  }
   std::string first_failure;  // why a run ended in an error, for queries that fail for it
-  sampler.run(0, [&](const RunOutcomes& outcomes) {
+  const auto consume = [&](const RunOutcomes& outcomes) {
     if (!outcomes.failure.empty() && first_failure.empty()) {
       first_failure = "run " + std::to_string(consumed) + " ended in an error: " + outcomes.failure;
     }
@@ -135,7 +139,19 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     // Reading the clock costs little next to a run, but only every 64th run asks.
     if (++consumed % 64 == 0 && options.progress) report();
     return open > 0;
-  });
+  };
+  if (options.remote) {
+    const std::string failed = options.remote->consume(n, done.get(), consume);
+    for (QueryResult& r : results) {
+      if (!failed.empty() && r.error.empty() && !done[&r - results.data()]) r.error = failed;
+    }
+  } else {
+    OrderedSampler<RunOutcomes> sampler(threads,
+                                        [&](unsigned w, std::uint64_t index, RunOutcomes& made) {
+                                          workers[w]->run(index, done.get(), made);
+                                        });
+    sampler.run(0, consume);
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t p = 0; p < n; ++p) {

@@ -17,6 +17,8 @@
 
 namespace smcbip::smc {
 
+class RemoteRuns;
+
 /// Band: PESTIM's runs judged for every value of a monotone parameter at once, with DKW's
 /// simultaneous band (explore).
 enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band };
@@ -54,6 +56,9 @@ struct CheckOptions {
   /// --trace jsonl` writes them, each ending where its verdicts were known), named
   /// query-<q>-run-<i>.jsonl with q counted from 1 in the file and i the run index; empty: none.
   std::string save_traces;
+  /// Runs made by other processes (MPI): null for the threads of this one. On a worker
+  /// process check_properties serves runs and its results mean nothing.
+  RemoteRuns* remote = nullptr;
   /// Called now and then (about ten times a second) while a query's runs are made.
   std::function<void(const Progress&)> progress;
 };

@@ -175,8 +175,9 @@ int run_check(CheckCommand check) {
   }
   const std::optional<std::string> hash = hash_of(*system, check);
   if (!hash || !load_compiled(check, *hash)) return kInputError;
+  check.options.remote = check.remote;
   std::optional<ProgressBar> progress;
-  if (stderr_is_terminal()) {
+  if (!check.worker && stderr_is_terminal()) {
     progress.emplace(std::cerr, parsed.file.queries.size());
     check.options.progress = [&](const smc::Progress& p) { progress->show(p); };
   }
@@ -195,6 +196,7 @@ int run_check(CheckCommand check) {
     return kInputError;
   }
   if (progress) progress->clear();
+  if (check.worker) return 0;  // rank 0 reports
   const Report report{parsed.file, results, check.model.file, system->root_name, *hash};
   if (check.json) {
     std::cout << json_text(report);

@@ -9,6 +9,7 @@
 
 #include "bipc/bipc.h"
 #include "smc/check/check.h"
+#include "smc/check/remote_runs.h"
 
 namespace smcbip::tools {
 
@@ -19,6 +20,10 @@ struct CheckCommand {
   bool json = false;
   std::vector<std::string> parameters;  // --param NAME=values
   smc::CheckOptions options;
+  /// Set on the ranks of an MPI job: runs come from (or go to) other processes, and a worker
+  /// rank prints and writes nothing.
+  smc::RemoteRuns* remote = nullptr;
+  bool worker = false;
   std::string compiled;  // --compiled: a plugin, or the folder of a built `bipc gen` project
   bool explore = false;
   std::string plot, csv;  // explore: files to write

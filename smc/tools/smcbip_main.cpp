@@ -15,6 +15,7 @@
 #include "engines/options.h"
 #include "engines/plugin.h"
 #include "smc/tools/check_command.h"
+#include "smc/tools/distributed.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/monitor_command.h"
 
@@ -118,8 +119,8 @@ int main(int argc, char** argv) {
       return judging ? kJudgingInputError : engines::kUsageError;
     }
     if (monitor->parsed()) return tools::run_monitor(monitor_options);
-    if (check->parsed()) return tools::run_check(check_command);
-    if (explore->parsed()) return tools::run_check(explore_command);
+    if (check->parsed()) return tools::run_check_distributed(check_command, argc, argv);
+    if (explore->parsed()) return tools::run_check_distributed(explore_command, argc, argv);
     if (!compiled.empty()) return run_compiled(frontend, compiled, options);
     return run_simulate(frontend, options);
   } catch (const std::exception& e) {
