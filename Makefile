@@ -8,7 +8,7 @@ ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines monitors smc tests bench
 PREFIX ?= /usr/local
 
-.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check format clean
+.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check bench-mpi format clean
 
 all: build
 
@@ -72,6 +72,10 @@ bench-generated: build
 # Runs per second of smcbip check on one thread and on all cores (reports, never fails).
 bench-check: build
 	bench/check_runs.sh $(BUILD_DIR)
+
+# smcbip check on 1 process and on MPI jobs of 2 to 4 ranks; the consumer's own cost per run.
+bench-mpi: build
+	bench/mpi_ranks.sh $(BUILD_DIR)
 
 # The online monitor's events per second and memory on million-event traces.
 bench-monitor: build
