@@ -12,13 +12,17 @@ namespace smcbip::smc::mpi {
 /// Whether this process was started by an MPI launcher (mpirun, srun) with more than one rank.
 bool launched_with_ranks();
 
-/// MPI for the life of the object: initialised, then finalised.
+/// MPI for the life of the object: initialised, then finalised. When the launcher ends the job
+/// early (SIGTERM, SIGINT: a rank failed, or the job was stopped), rank 0 stops waiting for
+/// runs, reports what it has and exits with kEnded instead of finalising.
 class Session {
  public:
   Session(int& argc, char**& argv);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
+
+  static constexpr int kEnded = 2;
 
   int rank() const { return rank_; }
   int size() const { return size_; }
@@ -44,6 +48,7 @@ class MpiRuns final : public RemoteRuns {
   int rank_, size_;
   std::uint64_t batch_;
   unsigned ahead_;
+  bool ended_ = false;
 };
 
 }  // namespace smcbip::smc::mpi

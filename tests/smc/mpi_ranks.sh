@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # smcbip check and explore on 2 and 4 MPI ranks give the answers, sample counts and verdicts of
-# one process for the same seed (the timings aside), and the same exit code.
+# one process for the same seed (the timings aside), and the same exit code. Then a rank killed
+# during a job: rank 0 still reports the queries answered before, says which query the end of
+# the job interrupted, and writes its CSV whole.
 #
 # Usage: mpi_ranks.sh BIN_DIR SOURCE_DIR
 set -uo pipefail
@@ -45,4 +47,30 @@ for k in "${!cases[@]}"; do
       fail "case $k: exit $(cat "$out/case$k-$ranks.code") on $ranks ranks, $(cat "$out/case$k-1.code") on one"
   done
 done
+
+# A quick SPRT, then an estimate of 1.8 million runs that the kill interrupts.
+printf 'const c = 7\nP>=0.5 [ F[0,26] (serverC.sc == c && serverM.sm == c) ]\n%s\n' \
+  'P=? [ F[0,26] (serverC.sc == c && serverM.sm == c) ]' >"$out/two.mtl"
+timeout 120 mpirun --oversubscribe -np 3 "$bin/smcbip" explore "$source/models/tandem.bip" \
+  "$out/two.mtl" --root 'System()' --delta 0.001 --csv "$out/answers.csv" \
+  >"$out/stdout" 2>"$out/stderr" &
+launcher=$!
+sleep 5
+killed=""
+for pid in $(pgrep -f "$bin/smcbip explore"); do
+  rank=$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')
+  if [[ $rank == 2 ]]; then
+    kill -9 "$pid" && killed=$pid
+  fi
+done
+[[ -n $killed ]] || fail "killed rank: no rank 2 to kill"
+wait "$launcher"
+code=$?
+[[ $code != 0 && $code != 124 ]] || fail "killed rank: exit $code after a rank was killed"
+grep -q "does not hold  [0-9]* runs" "$out/stdout" || fail "killed rank: the first query's answer is missing: $(cat "$out/stdout")"
+grep -q "no answer: the MPI job was ended" "$out/stdout" ||
+  fail "killed rank: the interrupted query is not reported: $(cat "$out/stdout")"
+grep -q "smcbip: error: .*the MPI job was ended" "$out/stderr" || fail "killed rank: no error on stderr"
+[[ $(wc -l <"$out/answers.csv") == 3 ]] || fail "killed rank: the CSV is not whole: $(cat "$out/answers.csv")"
+ls "$out" | grep -q tmp && fail "killed rank: a temporary file was left: $(ls "$out")"
 echo "mpi_ranks: ok"
