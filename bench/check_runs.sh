@@ -52,23 +52,12 @@ ring="$models_dir/relay_ring_50.bip"
 } >"$ring"
 printf 'P=? [ F[0,60] r49.held > 0 ]\n' >"$models_dir/relay_ring_50.mtl"
 
-# Prints "runs seconds" of one check: the best of $repeat.
+source "bench/check_common.sh"
+
+# Prints "runs seconds" of one check on $4 threads: the best of $repeat.
 measure() {
-  local model=$1 root=$2 properties=$3 threads=$4
-  for ((k = 0; k < repeat; k++)); do
-    "$smcbip" check "$model" "$properties" --root "$root" --delta "$delta" --threads "$threads" \
-      --json
-  done | python3 -c 'import json, sys
-text = sys.stdin.read()
-decoder, at, best = json.JSONDecoder(), 0, None
-while at < len(text):
-    r, at = decoder.raw_decode(text, at)
-    r = r["results"][0]
-    if best is None or r["seconds"] < best[1]:
-        best = (r["samples"] + r["undecided"], r["seconds"])
-    while at < len(text) and text[at].isspace():
-        at += 1
-print(*best)'
+  local threads=$4
+  best_check "$1" "$2" "$3"
 }
 
 echo "check_runs: $cores cores, load average $(cut -d' ' -f1-3 /proc/loadavg); PESTIM, delta $delta, best of $repeat"

@@ -42,24 +42,13 @@ BIP
 printf 'P=? [ F[0,1] a.s ]\n' >"$models_dir/trivial.mtl"
 printf 'P=? [ F[0,100] Channel.lost > 0 ]\n' >"$models_dir/channel_estimate.mtl"
 
+source "bench/check_common.sh"
+
 # Prints "runs seconds" of one check on $1 ranks (1: no MPI), the best of $repeat.
 measure() {
-  local ranks=$1 model=$2 root=$3 properties=$4 launcher=()
+  local ranks=$1 threads=1 launcher=()
   [[ $ranks == 1 ]] || launcher=(mpirun --oversubscribe -np "$ranks")
-  for ((k = 0; k < repeat; k++)); do
-    "${launcher[@]}" "$smcbip" check "$model" "$properties" --root "$root" --delta "$delta" \
-      --threads 1 --json
-  done | python3 -c 'import json, sys
-text = sys.stdin.read()
-decoder, at, best = json.JSONDecoder(), 0, None
-while at < len(text):
-    r, at = decoder.raw_decode(text, at)
-    r = r["results"][0]
-    if best is None or r["seconds"] < best[1]:
-        best = (r["samples"] + r["undecided"], r["seconds"])
-    while at < len(text) and text[at].isspace():
-        at += 1
-print(*best)'
+  best_check "$2" "$3" "$4" "${launcher[@]}"
 }
 
 echo "mpi_ranks: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); PESTIM, delta $delta, best of $repeat"
