@@ -7,6 +7,7 @@
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -89,6 +90,24 @@ Bytes receive(int from, int tag, MPI_Status& status) {
   MPI_Recv(data.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
   return Bytes(std::move(data));
+}
+
+/// The message `status` announced (wait_for), received without blocking so that a sender that
+/// dies halfway through a long message cannot hold rank 0; nullopt if the job ends meanwhile.
+std::optional<Bytes> receive_announced(const MPI_Status& status) {
+  int count = 0;
+  MPI_Get_count(&status, MPI_CHAR, &count);
+  std::vector<char> data(static_cast<std::size_t>(count));
+  MPI_Request request;
+  MPI_Irecv(data.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+            &request);
+  for (;;) {
+    int complete = 0;
+    MPI_Test(&request, &complete, MPI_STATUS_IGNORE);
+    if (complete) return Bytes(std::move(data));
+    if (ending) return std::nullopt;
+    std::this_thread::yield();
+  }
 }
 
 /// A batch's outcomes as a worker made them: the runs made, then, if one failed, why.
@@ -186,14 +205,15 @@ std::string MpiRuns::consume(std::size_t points, const std::atomic<bool>* done,
     const auto ready = arrived.find(i - i % batch_);
     if (ready == arrived.end()) {
       MPI_Status status;
-      if (!wait_for(MPI_ANY_SOURCE, kResult, status)) {
+      std::optional<Bytes> in;
+      if (wait_for(MPI_ANY_SOURCE, kResult, status)) in = receive_announced(status);
+      if (!in) {
         ended_ = true;
         return "the MPI job was ended (a rank failed, which the launcher names, or the job was "
                "stopped) while rank 0 waited for run " +
                std::to_string(i) + " from rank " + std::to_string(holder[i - i % batch_]);
       }
-      Bytes in = receive(MPI_ANY_SOURCE, kResult, status);
-      Batch batch = get_batch(in, status.MPI_SOURCE);
+      Batch batch = get_batch(*in, status.MPI_SOURCE);
       holder.erase(batch.first);
       --outstanding[static_cast<std::size_t>(batch.rank)];
       arrived.emplace(batch.first, std::move(batch));
