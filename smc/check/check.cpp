@@ -142,8 +142,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   };
   if (options.remote) {
     const std::string failed = options.remote->consume(n, done.get(), consume);
-    for (QueryResult& r : results) {
-      if (!failed.empty() && r.error.empty() && !done[&r - results.data()]) r.error = failed;
+    for (std::size_t p = 0; p < n && !failed.empty(); ++p) {
+      if (results[p].error.empty() && !done[p].load()) results[p].error = failed;
     }
   } else {
     OrderedSampler<RunOutcomes> sampler(threads,

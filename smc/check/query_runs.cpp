@@ -23,10 +23,10 @@ class NullBuffer final : public std::streambuf {
 /// Passes each step to the observers of the points still judged, until all have decided.
 class QueryRuns::Observer final : public engines::RunObserver {
  public:
-  void start(std::vector<engines::RunObserver*> observers) {
-    observers_ = std::move(observers);
-    watching_ = observers_;
-  }
+  /// A new run, watched by the observers given next (their storage is kept between runs).
+  void clear() { observers_.clear(); }
+  void watch(engines::RunObserver* o) { observers_.push_back(o); }
+  void start() { watching_.assign(observers_.begin(), observers_.end()); }
 
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
     std::erase_if(watching_, [&](engines::RunObserver* o) { return !o->observe(step, state); });
@@ -63,8 +63,10 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
   const monitors::Query& q = *query.query;
   if (query.swept) {
     double largest = 0;
-    for (const monitors::Bindings& b : query.points)
-      largest = std::max(largest, b.at(*query.swept));
+    for (const monitors::Bindings& b : query.points) {
+      swept_values_.push_back(b.at(*query.swept));
+      largest = std::max(largest, swept_values_.back());
+    }
     sweep_ = std::make_unique<monitors::RunCriticalBound>(
         *q.formula, *query.swept, largest, kNanoseconds, query.points.front(), q.run);
     return;
@@ -83,22 +85,28 @@ QueryRuns::~QueryRuns() = default;
 
 void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutcomes& made) {
   const std::size_t n = query_.points.size();
-  std::vector<engines::RunObserver*> observers;
+  observer_->clear();
   if (sweep_) {
     sweep_->reset();
-    observers.push_back(sweep_.get());
+    observer_->watch(sweep_.get());
   }
-  for (std::size_t p = 0; p < monitors_.size(); ++p) {
-    if (done[p].load(std::memory_order_relaxed)) continue;
-    monitors_[p]->reset();
-    observers.push_back(monitors_[p].get());
+  // Read once: the consumer may close a point while the run is made.
+  judged_.resize(n);
+  for (std::size_t p = 0; p < n; ++p)
+    judged_[p] = !sweep_ && !done[p].load(std::memory_order_relaxed);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!judged_[p]) continue;
+    engines::RunObserver* o = monitors_.empty()
+                                  ? static_cast<engines::RunObserver*>(extrema_[p].get())
+                                  : monitors_[p].get();
+    if (monitors_.empty()) {
+      extrema_[p]->reset();
+    } else {
+      monitors_[p]->reset();
+    }
+    observer_->watch(o);
   }
-  for (std::size_t p = 0; p < extrema_.size(); ++p) {
-    if (done[p].load(std::memory_order_relaxed)) continue;
-    extrema_[p]->reset();
-    observers.push_back(extrema_[p].get());
-  }
-  observer_->start(std::move(observers));
+  observer_->start();
   trace_.str({});
   simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
@@ -107,9 +115,10 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   std::vector<Outcome>& outcomes = made.points;
   outcomes.assign(n, Outcome{});
   for (std::size_t p = 0; p < n; ++p) {
-    if (done[p].load(std::memory_order_relaxed) && !sweep_) continue;
     if (sweep_) {
-      outcomes[p].verdict = sweep_->verdict(query_.points[p].at(*query_.swept));
+      outcomes[p].verdict = sweep_->verdict(swept_values_[p]);
+    } else if (!judged_[p]) {
+      continue;
     } else if (!monitors_.empty()) {
       outcomes[p].verdict = monitors_[p]->verdict();
     } else {

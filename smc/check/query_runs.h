@@ -58,6 +58,8 @@ class QueryRuns {
   std::vector<std::unique_ptr<monitors::RunMonitor>> monitors_;  // path formulas, per point
   std::vector<std::unique_ptr<monitors::RunExtremum>> extrema_;  // expectations, per point
   std::unique_ptr<monitors::RunCriticalBound> sweep_;            // all points at once
+  std::vector<double> swept_values_;  // the swept parameter's value at each point
+  std::vector<char> judged_;          // this run: the points watched
   std::unique_ptr<Observer> observer_;
   std::unique_ptr<std::streambuf> nothing_;
   std::ostream sink_;

@@ -68,17 +68,25 @@ volatile std::sig_atomic_t ending = 0;
 
 extern "C" void note_ending(int) { ending = 1; }
 
+/// Polls `ready` until it holds (true) or the job ends (false).
+template <class Ready>
+bool poll_until(Ready ready) {
+  for (;;) {
+    if (ready()) return true;
+    if (ending) return false;
+    std::this_thread::yield();
+  }
+}
+
 /// Waits for a message from `from` (or any rank) with `tag` (or any), polling so as not to miss
 /// the end of the job; false if the job ends. It keeps its core busy, as MPI's blocking calls
 /// do: sleeping between polls delayed the hand-out enough to cost a fifth of the throughput.
 bool wait_for(int from, int tag, MPI_Status& status) {
-  for (;;) {
+  return poll_until([&] {
     int arrived = 0;
     MPI_Iprobe(from, tag, MPI_COMM_WORLD, &arrived, &status);
-    if (arrived) return true;
-    if (ending) return false;
-    std::this_thread::yield();
-  }
+    return arrived != 0;
+  });
 }
 
 /// The next message from `from` (or any rank) with `tag` (or any); its sender and tag.
@@ -101,13 +109,13 @@ std::optional<Bytes> receive_announced(const MPI_Status& status) {
   MPI_Request request;
   MPI_Irecv(data.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
             &request);
-  for (;;) {
+  const bool received = poll_until([&] {
     int complete = 0;
     MPI_Test(&request, &complete, MPI_STATUS_IGNORE);
-    if (complete) return Bytes(std::move(data));
-    if (ending) return std::nullopt;
-    std::this_thread::yield();
-  }
+    return complete != 0;
+  });
+  if (!received) return std::nullopt;
+  return Bytes(std::move(data));
 }
 
 /// A batch's outcomes as a worker made them: the runs made, then, if one failed, why.

@@ -8,6 +8,7 @@
 
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
+#include "smc/tools/report.h"
 
 namespace smcbip::tools {
 namespace {
@@ -23,26 +24,19 @@ constexpr int kInputError = 2;
 const std::map<std::string, double> kTicksPerUnit{
     {"s", 1e9}, {"ms", 1e6}, {"us", 1e3}, {"ns", 1.0}};
 
-std::string number_text(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
-
 const char* verdict_text(Verdict v) {
   return v == Verdict::True ? "true" : v == Verdict::False ? "false" : "undecided";
 }
 
 std::string result_text(const TraceResult& r) {
-  if (r.value) return number_text(*r.value);
+  if (r.value) return number_text(*r.value, 12);
   return verdict_text(r.verdict);
 }
 
 std::string parameters_text(const monitors::Bindings& parameters) {
   std::string text;
   for (const auto& [name, value] : parameters) {
-    text += (text.empty() ? "  (" : ", ") + name + " = " + number_text(value);
+    text += (text.empty() ? "  (" : ", ") + name + " = " + number_text(value, 12);
   }
   return text.empty() ? text : text + ")";
 }

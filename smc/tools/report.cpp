@@ -10,12 +10,6 @@
 namespace smcbip::tools {
 namespace {
 
-std::string number(double v, int digits = 6) {
-  std::ostringstream out;
-  out << std::setprecision(digits) << v;
-  return out.str();
-}
-
 bool has_interval(const smc::QueryResult& r) {
   return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp;
 }
@@ -27,7 +21,7 @@ std::string verdict_text(const smc::QueryResult& r) {
 
 std::string parameters_text(const smc::QueryResult& r) {
   std::string text;
-  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number(value);
+  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number_text(value);
   return text;
 }
 
@@ -37,14 +31,14 @@ std::string guarantee(const smc::QueryResult& first, std::size_t points) {
   if (first.method == smc::Method::Band) {
     out << "one set of " << first.samples << " runs judges all " << points
         << " values; each estimate is within +-"
-        << number(smc::dkw_half_width(first.samples, first.alpha), 3)
-        << " of its probability, all at once, with confidence " << number(1 - first.alpha)
+        << number_text(smc::dkw_half_width(first.samples, first.alpha), 3)
+        << " of its probability, all at once, with confidence " << number_text(1 - first.alpha)
         << " (DKW band)";
   } else if (first.split > 1) {
     out << "the " << points << " points share their runs; alpha "
-        << number(first.alpha * static_cast<double>(first.split)) << " is split over them ("
-        << number(first.alpha, 4) << " each), so every answer holds at once with confidence "
-        << number(1 - first.alpha * static_cast<double>(first.split));
+        << number_text(first.alpha * static_cast<double>(first.split)) << " is split over them ("
+        << number_text(first.alpha, 4) << " each), so every answer holds at once with confidence "
+        << number_text(1 - first.alpha * static_cast<double>(first.split));
   } else {
     out << "one point";
   }
@@ -63,6 +57,12 @@ std::string csv_field(const std::string& text) {
 
 }  // namespace
 
+std::string number_text(double v, int digits) {
+  std::ostringstream out;
+  out << std::setprecision(digits) << v;
+  return out.str();
+}
+
 std::string query_text(const Report& report, const smc::QueryResult& r) {
   return to_string(report.file.queries[r.query]);
 }
@@ -76,11 +76,12 @@ void print_results(std::ostream& out, const Report& report) {
       continue;
     }
     if (r.verdict) out << verdict_text(r) << ", ";
-    out << "estimate " << number(r.estimate);
-    if (has_interval(r)) out << " in [" << number(r.ci.low) << ", " << number(r.ci.high) << "]";
+    out << "estimate " << number_text(r.estimate);
+    if (has_interval(r))
+      out << " in [" << number_text(r.ci.low) << ", " << number_text(r.ci.high) << "]";
     out << ", " << r.samples << " runs";
     if (r.undecided > 0) out << " (" << r.undecided << " undecided)";
-    out << ", " << number(r.seconds) << " s\n";
+    out << ", " << number_text(r.seconds) << " s\n";
   }
 }
 
@@ -95,23 +96,23 @@ void print_sweeps(std::ostream& out, const Report& report) {
       const smc::QueryResult& r = rs[i];
       out << "  ";
       for (const auto& [name, value] : r.parameters) {
-        out << name << "=" << std::left << std::setw(8) << number(value) << " ";
+        out << name << "=" << std::left << std::setw(8) << number_text(value) << " ";
       }
       out << std::right;
       if (!r.error.empty()) {
         out << "no answer: " << r.error << "\n";
         continue;
       }
-      out << std::setw(10) << number(r.estimate);
+      out << std::setw(10) << number_text(r.estimate);
       if (has_interval(r)) {
-        out << "  [" << number(r.ci.low, 4) << ", " << number(r.ci.high, 4) << "]";
+        out << "  [" << number_text(r.ci.low, 4) << ", " << number_text(r.ci.high, 4) << "]";
       }
       if (r.verdict) out << "  " << verdict_text(r);
       out << "  " << r.samples << " runs";
       if (r.undecided > 0) out << " (" << r.undecided << " undecided)";
       out << "\n";
     }
-    out << "  " << number(rs[end - 1].seconds, 3) << " s\n";
+    out << "  " << number_text(rs[end - 1].seconds, 3) << " s\n";
   }
 }
 
@@ -157,17 +158,18 @@ std::string csv_text(const Report& report) {
     for (const std::string& name : names) {
       out << ",";
       if (const auto found = r.parameters.find(name); found != r.parameters.end()) {
-        out << number(found->second, 17);
+        out << number_text(found->second, 17);
       }
     }
     out << "," << smc::method_name(r.method) << ",";
     if (r.error.empty()) {
-      out << number(r.estimate, 17) << "," << number(r.ci.low, 17) << "," << number(r.ci.high, 17);
+      out << number_text(r.estimate, 17) << "," << number_text(r.ci.low, 17) << ","
+          << number_text(r.ci.high, 17);
     } else {
       out << ",,";
     }
     out << "," << (r.verdict ? (*r.verdict ? "true" : "false") : "") << "," << r.samples << ","
-        << r.undecided << "," << number(r.alpha, 17) << "," << number(r.seconds) << "\n";
+        << r.undecided << "," << number_text(r.alpha, 17) << "," << number_text(r.seconds) << "\n";
   }
   return out.str();
 }

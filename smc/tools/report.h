@@ -18,6 +18,9 @@ struct Report {
   std::string model, root, hash;  // the model's file, root and ir::model_hash
 };
 
+/// `v` with at most `digits` significant digits, as people read numbers in reports.
+std::string number_text(double v, int digits = 6);
+
 /// A query's text without its parameters' values.
 std::string query_text(const Report& report, const smc::QueryResult& r);
 

@@ -18,11 +18,7 @@ constexpr double kLeft = 76, kRight = 170, kTop = 56, kBottom = 58;
 constexpr std::array<const char*, 6> kColours{"#1f77b4", "#d62728", "#2ca02c",
                                               "#9467bd", "#ff7f0e", "#8c564b"};
 
-std::string text(double v, int digits = 6) {
-  std::ostringstream out;
-  out << std::setprecision(digits) << v;
-  return out.str();
-}
+std::string text(double v, int digits = 6) { return number_text(v, digits); }
 
 /// Axis ticks at a round step (1, 2, 2.5 or 5 times a power of ten), about five of them.
 std::vector<double> ticks(double low, double high) {
