@@ -147,6 +147,7 @@ class Scheduler {
   const SimulateOptions& options_;
   ItemPicker* picker_;
   RandomStream random_;
+  SharedWindowChooser shared_window_;
   Runtime runtime_;
   DatePlanner planner_;
   std::vector<TimeValue> dates_;  // the stochastic race's planned dates, per item
@@ -172,7 +173,7 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::choose(bool& 
   return std::pair{random_choice()};
 }
 
-/// random_choice when every item has the same window (untimed models): choose_in_shared_window
+/// random_choice when every item has the same window (untimed models): SharedWindowChooser
 /// on the windows [now, +inf) and {now}; nullopt on other windows.
 inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::shared_window_choice() {
   if (!shared_.layout.untimed) return std::nullopt;
@@ -180,7 +181,7 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::shared_window
   const Interval& window = runtime_.items_window();
   const bool open_ended = window == Interval::from(now);
   if (!open_ended && !(window == Interval::point(now))) return std::nullopt;
-  const SharedWindowChoice choice = choose_in_shared_window(
+  const SharedWindowChoice choice = shared_window_.choose(
       runtime_.item_count(), now, open_ended, options_.asap, options_.first_enabled, random_);
   return std::pair{choice.chosen, choice.date};
 }

@@ -6,8 +6,8 @@
 //
 // It makes the Runtime's and Scheduler's choices with the same draws. Items sit at positions
 // (the listed connectors in listing order, then the internal ports). On an untimed layout they
-// are counted in an ItemIndex and chosen by choose_in_shared_window; on a timed one (or in
-// stochastic mode) each has its constraint, the waiting window cuts them as
+// are kept in EnabledPositions (the order of ItemIndex's counts) and chosen by SharedWindowChooser;
+// on a timed one (or in stochastic mode) each has its constraint, the waiting window cuts them as
 // Runtime::wait_interval does, and the reference race (random_race) or the stochastic race of
 // planned dates (earliest_in_window, dates kept per position as DatePlanner keeps them per
 // item) chooses. The firing is that of Runtime::execute_value and fire_port.
@@ -27,8 +27,8 @@
 #include "engines/model.h"
 #include "engines/run_observer.h"
 #include "engines/semantics/detail/runtime_shared.h"
+#include "engines/semantics/enabled_positions.h"
 #include "engines/semantics/flat_tables.h"
-#include "engines/semantics/item_index.h"
 #include "engines/semantics/item_race.h"
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime.h"
@@ -85,8 +85,8 @@ class FlatSteps final : public CompiledSteps {
     if (n == 0) return Outcome::Deadlock;
     if (at_limit) return Outcome::Limit;
     const SharedWindowChoice choice =
-        choose_in_shared_window(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    return fire(static_cast<std::uint32_t>(index_.find(choice.chosen).first), choice.date, info);
+        shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
+    return fire(static_cast<std::uint32_t>(index_.find(choice.chosen)), choice.date, info);
   }
 
  private:
@@ -313,7 +313,7 @@ class FlatSteps final : public CompiledSteps {
       enabled = offer.has_value();
       eager = enabled && offer->constraint.urgency == bipc::Urgency::Eager;
     }
-    index_.set(p, enabled ? 1 : 0);
+    index_.set(p, enabled);
     const bool now_eager = enabled && eager;
     if (now_eager != static_cast<bool>(eager_[p])) {
       eager_[p] = now_eager;
@@ -395,7 +395,8 @@ class FlatSteps final : public CompiledSteps {
   bool timed_ = false;  // the items have windows of their own (timed_step)
   std::vector<std::optional<AtomPortValue>> offers_;
   std::vector<Val> value_data_;
-  ItemIndex index_;
+  EnabledPositions index_;  // a position holds one item at most
+  SharedWindowChooser shared_window_;
   std::vector<std::uint8_t> eager_;  // per position: its item is enabled and eager
   std::ptrdiff_t eager_count_ = 0;
   // The atoms a step fired, and the positions it recomputed, marked by the step's stamp.

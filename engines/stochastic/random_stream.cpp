@@ -1,6 +1,7 @@
 // The counter-based random stream of one run (see random_stream.h for the construction).
 #include "engines/stochastic/random_stream.h"
 
+#include <bit>
 #include <cstdio>
 #include <cstdlib>
 
@@ -30,6 +31,17 @@ void RandomStream::set_below(std::uint64_t n) {
   }
   below_n_ = n;
   below_threshold_ = (0 - n) % n;
+  below_magic_ = 0;
+}
+
+void RandomStream::set_reciprocal(std::uint64_t n) {
+  // l = ceil(log2 n); magic = floor(2^64 (2^l - n) / n) + 1, which fits 64 bits as 2^l - n < n.
+  const unsigned l = n == 1 ? 0 : static_cast<unsigned>(64 - std::countl_zero(n - 1));
+  const std::uint64_t excess = l == 64 ? 0 - n : (std::uint64_t{1} << l) - n;
+  __extension__ using Wide = unsigned __int128;
+  below_magic_ = static_cast<std::uint64_t>((Wide{excess} << 64) / n + 1);
+  below_shift1_ = l < 1 ? l : 1;
+  below_shift2_ = l > 1 ? l - 1 : 0;
 }
 
 }  // namespace smcbip::engines

@@ -54,16 +54,22 @@ class RandomStream {
   }
 
   /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
-  /// as OpenBSD's arc4random_uniform). n must be positive; n == 0 aborts. Inline, with the
-  /// rejection threshold of the last n kept: schedulers draw among the same number of items
-  /// step after step, and a 64-bit division is a good part of a step.
+  /// as OpenBSD's arc4random_uniform): x mod n of the first draw x not in that block. n must be
+  /// positive; n == 0 aborts. Inline, with the rejection threshold of the last n kept, and its
+  /// reciprocal from its second draw on: schedulers draw among the same number of items step
+  /// after step, and a 64-bit division is a good part of a step where the reciprocal costs two
+  /// multiplications; computing the reciprocal costs a 128-bit division, which bounds that
+  /// change from draw to draw (the planner's uniform dates) would pay at every draw.
   std::uint64_t below(std::uint64_t n) {
     if (n != below_n_) [[unlikely]] {
       set_below(n);
+    } else if (below_magic_ == 0) [[unlikely]] {
+      set_reciprocal(n);
     }
     while (true) {
       const std::uint64_t x = next_u64();
-      if (x >= below_threshold_) return x % n;
+      if (x < below_threshold_) continue;
+      return below_magic_ == 0 ? x % n : x - below_quotient(x) * n;
     }
   }
 
@@ -85,8 +91,19 @@ class RandomStream {
   // below(): the last n and 2^64 mod n; draws below it fall in the incomplete block
   // [0, 2^64 mod n) and are redrawn, the rest cover each residue floor(2^64 / n) times.
   std::uint64_t below_n_ = 0, below_threshold_ = 0;
+  // floor(x / below_n_) by multiplication (Granlund and Montgomery, "Division by invariant
+  // integers using multiplication", PLDI 1994, figure 4.1): exact for every 64-bit x. The
+  // magic number is at least 1; 0 means not computed yet.
+  std::uint64_t below_magic_ = 0;
+  unsigned below_shift1_ = 0, below_shift2_ = 0;
+  std::uint64_t below_quotient(std::uint64_t x) const {
+    __extension__ using Wide = unsigned __int128;
+    const auto high = static_cast<std::uint64_t>((Wide{below_magic_} * x) >> 64);
+    return (high + ((x - high) >> below_shift1_)) >> below_shift2_;
+  }
   /// Keeps n and its threshold for below(); aborts on n == 0.
   void set_below(std::uint64_t n);
+  void set_reciprocal(std::uint64_t n);
 };
 
 }  // namespace smcbip::engines

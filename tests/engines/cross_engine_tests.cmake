@@ -2,4 +2,4 @@
 # engine's (uses the trace harness of conformance_tests.cmake and the generator's models).
 list(APPEND ENGINES_TEST_SOURCES cross_engine_test.cpp)
 # The optimised scheduler's counted items against the list the reference engine builds.
-list(APPEND ENGINES_TEST_SOURCES item_index_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES item_index_test.cpp enabled_positions_test.cpp)

@@ -193,6 +193,36 @@ TEST(RandomStream, BelowIsInRangeAndUnbiased) {
   for (int i = 0; i < 100; ++i) ASSERT_LT(r.below(big), big);
 }
 
+TEST(RandomStream, BelowIsTheFirstAcceptedDrawModuloN) {
+  // below() divides by a reciprocal: it must equal x % n for the draw x it keeps, for bounds of
+  // every magnitude (1, powers of two and their neighbours, 2^64 - 1) and bounds changing
+  // between draws.
+  std::vector<std::uint64_t> bounds = {1, 2, 3, 5, 6, 7, 10, 500, 1000, 0xFFFFFFFFFFFFFFFFu};
+  for (unsigned k = 1; k < 64; ++k) {
+    const std::uint64_t power = std::uint64_t{1} << k;
+    bounds.insert(bounds.end(), {power - 1, power, power + 1, power + power / 3});
+  }
+  RandomStream pick(21, 0);
+  for (int i = 0; i < 200; ++i) bounds.push_back((pick.next_u64() >> (pick.next_u64() % 64)) | 1);
+  for (const std::uint64_t n : bounds) {
+    RandomStream drawn(22, n), raw(22, n);
+    for (int i = 0; i < 50; ++i) {
+      const std::uint64_t threshold = (0 - n) % n;
+      std::uint64_t x = raw.next_u64();
+      while (x < threshold) x = raw.next_u64();
+      ASSERT_EQ(drawn.below(n), x % n) << "n = " << n << ", draw " << i;
+    }
+  }
+  RandomStream alternating(23, 0), raw(23, 0);
+  for (std::uint64_t i = 1; i < 2000; ++i) {
+    const std::uint64_t n = i % 2 == 0 ? i : (std::uint64_t{1} << 63) + i;
+    const std::uint64_t threshold = (0 - n) % n;
+    std::uint64_t x = raw.next_u64();
+    while (x < threshold) x = raw.next_u64();
+    ASSERT_EQ(alternating.below(n), x % n) << "n = " << n;
+  }
+}
+
 TEST(RandomStream, DrivesStandardDistributions) {
   RandomStream r(13, 0);
   std::uniform_int_distribution<int> die(1, 6);

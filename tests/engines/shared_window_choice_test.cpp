@@ -24,6 +24,8 @@
 #include <vector>
 
 #include "engines/engines.h"
+#include "engines/semantics/shared_window.h"
+#include "engines/stochastic/random_stream.h"
 #include "tests/engines/temp_model.h"
 #include "tests/engines/trace_oracles.h"
 
@@ -154,6 +156,29 @@ TEST_P(SharedWindowChoice, FirstEnabledWinnerUniformWithItsOwnDate) {
   SimulateOptions o = options();
   o.first_enabled = true;
   expect_race_distribution(run(*system_, o), 10.0);
+}
+
+// The chooser skips the logarithm where the delay is 0: its dates must be those of the formula
+// now + floor(-mean ln u), bit for bit, for item counts whose cut lies anywhere in (0, 1)
+// (and underflows to 0, from about 7,500 items), counts changing between draws, and both means.
+TEST(SharedWindowChooser, DatesAreTheFormulasBitForBit) {
+  SharedWindowChooser chooser;
+  RandomStream drawn(31, 0), raw(31, 0);
+  const std::vector<std::size_t> counts = {1, 2, 3, 5, 9, 10, 11, 40, 368, 369, 500, 7500, 100000};
+  for (int round = 0; round < 40000; ++round) {
+    const std::size_t n = counts[static_cast<std::size_t>(round / 7) % counts.size()];
+    const bool first_enabled = round % 3 == 0;
+    const auto choice = chooser.choose(n, 100, true, false, first_enabled, drawn);
+    const auto chosen = static_cast<std::size_t>(raw.below(n));
+    const double mean = first_enabled ? 10.0 : 10.0 / static_cast<double>(n);
+    const TimeValue expected =
+        100 + static_cast<TimeValue>(std::floor(-mean * std::log(raw.uniform01_open())));
+    ASSERT_EQ(choice.chosen, chosen) << "n = " << n;
+    ASSERT_EQ(choice.date, expected) << "n = " << n << ", round " << round;
+  }
+  // The draws nearest the cut for two items (mean 5): u = exp(-1/5) rounded, and the doubles
+  // around it, where the formula's delay turns from 0 to 1.
+  EXPECT_EQ(std::floor(-5.0 * std::log(std::nextafter(std::exp(-0.2), 1.0))), 0.0);
 }
 
 std::string engine_name(const ::testing::TestParamInfo<EngineKind>& info) {
