@@ -43,11 +43,15 @@ template <class Code>
 class FlatSteps final : public CompiledSteps {
  public:
   FlatSteps(Code& code, const bipc::ir::System& system, const Layout& layout, FlatTables tables)
-      : code_(code), system_(system), layout_(layout), t_(std::move(tables)) {
+      : code_(code),
+        system_(system),
+        layout_(layout),
+        t_(std::move(tables)),
+        gather_touched_(t_.first_affected.empty()) {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
     touched_.assign(t_.atoms.size(), 0);
-    chosen_.assign(t_.ports.size(), 0);
+    chosen_.assign(t_.ports.size(), Flag::Off);
     recomputed_.assign(t_.positions(), 0);
   }
 
@@ -62,9 +66,9 @@ class FlatSteps final : public CompiledSteps {
     if (timed_ && t_.has_triggered) return false;
     beyond_ = false;
     index_.reset(t_.positions());
-    eager_.assign(t_.positions(), 0);
+    eager_.assign(t_.positions(), Flag::Off);
     eager_count_ = 0;
-    enabled_.assign(t_.positions(), 0);
+    enabled_.assign(t_.positions(), Flag::Off);
     raw_.assign(t_.positions(), Constraint{});
     plans_.assign(t_.positions(), DatePlanner::Plan{});
     generation_ = 1;
@@ -90,6 +94,11 @@ class FlatSteps final : public CompiledSteps {
   }
 
  private:
+  // The flags of positions and ports. Not std::uint8_t: a store through a character type may
+  // alias anything, so the compiler would reload every table's address after each.
+  enum class Flag : std::uint8_t { Off, On };
+  static Flag flag(bool on) { return on ? Flag::On : Flag::Off; }
+
   /// An item of a timed step: its position and its window cut to the waiting window.
   struct Listed {
     std::uint32_t position = 0;
@@ -102,13 +111,13 @@ class FlatSteps final : public CompiledSteps {
     const TimeValue now = state_->now;
     Interval waiting = Interval::from(now);
     for (std::uint32_t p = 0; p < t_.positions(); ++p) {
-      if (enabled_[p] && raw_[p].urgency != bipc::Urgency::Lazy) {
+      if (enabled_[p] == Flag::On && raw_[p].urgency != bipc::Urgency::Lazy) {
         narrow(waiting, detail::wait(raw_[p], now));
       }
     }
     items_.clear();
     for (std::uint32_t p = 0; p < t_.positions(); ++p) {
-      if (!enabled_[p]) continue;
+      if (enabled_[p] == Flag::Off) continue;
       // Copied field by field for the reason recompute_timed gives.
       Listed& item = items_.emplace_back();
       item.position = p;
@@ -172,8 +181,10 @@ class FlatSteps final : public CompiledSteps {
     state_->now = date;
     info = StepInfo{};
     info.time = date;
-    ++stamp_;
-    touched_list_.clear();
+    if (gather_touched_) {
+      ++stamp_;
+      touched_list_.clear();
+    }
     try {
       if (p < t_.connectors.size()) {
         info.fired = StepInfo::Fired::Interaction;
@@ -186,19 +197,32 @@ class FlatSteps final : public CompiledSteps {
         info.port = internal.port;
         if (!fire_port(internal.atom, internal.port)) return Outcome::Beyond;
       }
-      for (Index a : touched_list_) {
-        const FlatTables::Atom& atom = t_.atoms[a];
-        for (std::uint32_t i = atom.first_neighbour; i < atom.neighbours_end; ++i) {
-          const std::uint32_t q = t_.neighbours[i];
-          if (recomputed_[q] == stamp_) continue;
-          recomputed_[q] = stamp_;
-          recompute(q);
+      if (t_.first_affected.empty()) {
+        recompute_touched();
+      } else {
+        // Recomputing an item its firing left as it was gives it again: a superset of the
+        // touched atoms' positions does, and needs no deduplication.
+        for (std::uint32_t i = t_.first_affected[p]; i < t_.first_affected[p + 1]; ++i) {
+          recompute(t_.affected[i]);
         }
       }
     } catch (const CodeFault&) {
       return Outcome::Beyond;
     }
     return beyond_ ? Outcome::Beyond : Outcome::Fired;
+  }
+
+  /// Recomputes the positions of the atoms the step touched, each once.
+  void recompute_touched() {
+    for (Index a : touched_list_) {
+      const FlatTables::Atom& atom = t_.atoms[a];
+      for (std::uint32_t i = atom.first_neighbour; i < atom.neighbours_end; ++i) {
+        const std::uint32_t q = t_.neighbours[i];
+        if (recomputed_[q] == stamp_) continue;
+        recomputed_[q] = stamp_;
+        recompute(q);
+      }
+    }
   }
 
   /// What connector code finds its port parameters through (Frame::port_slot).
@@ -254,7 +278,7 @@ class FlatSteps final : public CompiledSteps {
     const FlatTables::Atom& atom = t_.atoms[a];
     const std::optional<AtomPortValue>& offer = offers_[atom.first_offer + port];
     if (!offer) return true;
-    if (touched_[a] != stamp_) {
+    if (gather_touched_ && touched_[a] != stamp_) {
       touched_[a] = stamp_;
       touched_list_.push_back(a);
     }
@@ -282,7 +306,7 @@ class FlatSteps final : public CompiledSteps {
     }
     std::copy_n(value_data_.begin() + c.value_data, c.data_size, state_->data.begin() + c.data);
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
-      if (c.triggered && !chosen_[i]) continue;
+      if (c.triggered && chosen_[i] == Flag::Off) continue;
       if (!fire_port(t_.ports[i].atom, t_.ports[i].port)) return false;
     }
     return true;
@@ -315,8 +339,8 @@ class FlatSteps final : public CompiledSteps {
     }
     index_.set(p, enabled);
     const bool now_eager = enabled && eager;
-    if (now_eager != static_cast<bool>(eager_[p])) {
-      eager_[p] = now_eager;
+    if (now_eager != (eager_[p] == Flag::On)) {
+      eager_[p] = flag(now_eager);
       eager_count_ += now_eager ? 1 : -1;
     }
   }
@@ -330,7 +354,7 @@ class FlatSteps final : public CompiledSteps {
     const AtomPortValue* first = nullptr;
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
       const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
-      chosen_[i] = offer.has_value() ? 1 : 0;
+      chosen_[i] = flag(offer.has_value());
       if (!offer) continue;
       trigger = trigger || t_.ports[i].trigger;
       if (first == nullptr) first = &*offer;
@@ -367,7 +391,7 @@ class FlatSteps final : public CompiledSteps {
       enabled = offer.has_value();
       if (enabled) detail::add_offer_constraint(raw, offer->constraint);
     }
-    enabled_[p] = enabled ? 1 : 0;
+    enabled_[p] = flag(enabled);
   }
 
   /// Runtime::connector_code_allows: the connector's data copied into its value, the guard, then
@@ -397,17 +421,19 @@ class FlatSteps final : public CompiledSteps {
   std::vector<Val> value_data_;
   EnabledPositions index_;  // a position holds one item at most
   SharedWindowChooser shared_window_;
-  std::vector<std::uint8_t> eager_;  // per position: its item is enabled and eager
+  std::vector<Flag> eager_;  // per position: its item is enabled and eager
   std::ptrdiff_t eager_count_ = 0;
   // The atoms a step fired, and the positions it recomputed, marked by the step's stamp.
+  // Only where the tables list no affected positions.
+  bool gather_touched_ = false;
   std::uint64_t stamp_ = 0;
   std::vector<std::uint64_t> touched_, recomputed_;
   std::vector<Index> touched_list_;
-  std::vector<std::uint8_t> chosen_;  // per port of a broadcast: it offers (its interaction's)
-  bool beyond_ = false;               // a recomputed item is beyond this path: the step ends it
+  std::vector<Flag> chosen_;  // per port of a broadcast: it offers (its interaction's)
+  bool beyond_ = false;       // a recomputed item is beyond this path: the step ends it
   // Timed steps: per position whether its item is enabled and its constraint; the items of
   // the step; stochastic mode: the plans per position, the race count, a draw's error.
-  std::vector<std::uint8_t> enabled_;
+  std::vector<Flag> enabled_;
   std::vector<Constraint> raw_;
   std::vector<Listed> items_;
   std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item

@@ -144,6 +144,38 @@ void index_neighbours(FlatTables& tables) {
   }
 }
 
+/// Per position, the positions whose items firing it may change: those of the atoms it binds,
+/// increasing. Left empty when they would take much more room than the atoms' lists (a hub
+/// atom in many connectors): steps then gather them from the atoms they touched.
+void index_affected(FlatTables& tables) {
+  const std::size_t limit = std::max<std::size_t>(65536, 4 * tables.neighbours.size());
+  std::vector<std::uint32_t> list;
+  const auto add_atom = [&](Index a) {
+    const FlatTables::Atom& atom = tables.atoms[a];
+    list.insert(list.end(), tables.neighbours.begin() + atom.first_neighbour,
+                tables.neighbours.begin() + atom.neighbours_end);
+  };
+  for (std::uint32_t p = 0; p < tables.positions(); ++p) {
+    list.clear();
+    if (p < tables.connectors.size()) {
+      const FlatTables::Connector& c = tables.connectors[p];
+      for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) add_atom(tables.ports[i].atom);
+    } else {
+      add_atom(tables.internal[p - tables.connectors.size()].atom);
+    }
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    if (tables.affected.size() + list.size() > limit) {
+      tables.affected.clear();
+      tables.first_affected.clear();
+      return;
+    }
+    tables.first_affected.push_back(static_cast<std::uint32_t>(tables.affected.size()));
+    tables.affected.insert(tables.affected.end(), list.begin(), list.end());
+  }
+  tables.first_affected.push_back(static_cast<std::uint32_t>(tables.affected.size()));
+}
+
 bool is_stochastic(const System& system, Index atom, Index port) {
   return system.atom_types[system.atoms[atom].type].ports[port].stochastic.has_value();
 }
@@ -194,6 +226,7 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     tables.internal.push_back({atom, port, first_offer[atom] + port});
   }
   index_neighbours(tables);
+  index_affected(tables);
   index_stochastic_ports(system, tables);
   return tables;
 }

@@ -55,6 +55,10 @@ struct FlatTables {
   std::vector<Port> ports;
   std::vector<std::uint32_t> param_slots;  // state data slots of the ports' parameters
   std::vector<std::uint32_t> neighbours;   // per atom: the item positions its offers decide
+  /// Per position p, affected[first_affected[p] .. first_affected[p + 1]): the positions of the
+  /// atoms its item binds (their neighbours, merged), which firing it may change. Both empty
+  /// when they would be much larger than `neighbours`.
+  std::vector<std::uint32_t> affected, first_affected;
   /// Per position: the @stochastic atom port its item fires, if any (DatePlanner's choice).
   std::vector<std::optional<std::pair<Index, Index>>> stochastic;
   std::uint32_t offer_count = 0, value_data_size = 0;

@@ -32,6 +32,7 @@ void RandomStream::set_below(std::uint64_t n) {
   below_n_ = n;
   below_threshold_ = (0 - n) % n;
   below_magic_ = 0;
+  below_repeats_ = 0;
 }
 
 void RandomStream::set_reciprocal(std::uint64_t n) {

@@ -56,14 +56,14 @@ class RandomStream {
   /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
   /// as OpenBSD's arc4random_uniform): x mod n of the first draw x not in that block. n must be
   /// positive; n == 0 aborts. Inline, with the rejection threshold of the last n kept, and its
-  /// reciprocal from its second draw on: schedulers draw among the same number of items step
-  /// after step, and a 64-bit division is a good part of a step where the reciprocal costs two
-  /// multiplications; computing the reciprocal costs a 128-bit division, which bounds that
-  /// change from draw to draw (the planner's uniform dates) would pay at every draw.
+  /// reciprocal once n was drawn below a few times in a row: schedulers draw among the same
+  /// number of items step after step, and a 64-bit division is a good part of a step where the
+  /// reciprocal costs two multiplications; computing it costs a 128-bit division, which bounds
+  /// changing from draw to draw (the planner's uniform dates) should not pay at every draw.
   std::uint64_t below(std::uint64_t n) {
     if (n != below_n_) [[unlikely]] {
       set_below(n);
-    } else if (below_magic_ == 0) [[unlikely]] {
+    } else if (below_magic_ == 0 && ++below_repeats_ == kRepeatsBeforeReciprocal) [[unlikely]] {
       set_reciprocal(n);
     }
     while (true) {
@@ -96,6 +96,8 @@ class RandomStream {
   // magic number is at least 1; 0 means not computed yet.
   std::uint64_t below_magic_ = 0;
   unsigned below_shift1_ = 0, below_shift2_ = 0;
+  unsigned below_repeats_ = 0;  // draws below the same n without its reciprocal
+  static constexpr unsigned kRepeatsBeforeReciprocal = 4;
   std::uint64_t below_quotient(std::uint64_t x) const {
     __extension__ using Wide = unsigned __int128;
     const auto high = static_cast<std::uint64_t>((Wide{below_magic_} * x) >> 64);

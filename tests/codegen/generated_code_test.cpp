@@ -2,6 +2,8 @@
 // engine, for every model of models/ (generated at build time by bipc gen).
 #include <gtest/gtest.h>
 
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -9,6 +11,7 @@
 #include "bipc/ir/model_hash.h"
 #include "engines/engines.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/flat_tables.h"
 #include "engines/semantics/layout.h"
 #include "generated_models.h"
 #include "run_trace.h"
@@ -112,10 +115,43 @@ TEST(CompiledSteps, CoverTheRendezvousModels) {
   for (const GeneratedModel& generated : generated_models()) {
     if (has_compiled_steps(generated.system(), generated.make_code)) covered.insert(generated.name);
   }
-  const std::set<std::string> expected = {
-      "broadcast_10",        "chain_10",    "channel",       "late_division", "late_mixed_urgency",
-      "late_nondeterminism", "late_unsafe", "rendezvous_10", "work_10"};
+  const std::set<std::string> expected = {"broadcast_10",
+                                          "chain_10",
+                                          "channel",
+                                          "hub",
+                                          "late_division",
+                                          "late_mixed_urgency",
+                                          "late_nondeterminism",
+                                          "late_unsafe",
+                                          "rendezvous_10",
+                                          "work_10"};
   EXPECT_EQ(covered, expected);
+}
+
+// A step recomputes the positions listed for the position it fired, merged from its atoms'
+// neighbours, unless those lists would be far larger than the atoms' own (the hub, in 300
+// connectors): the runs above compare both ways with the interpreter.
+TEST(CompiledSteps, ListAffectedPositionsUnlessTooMany) {
+  std::map<std::string, std::size_t> affected;
+  for (const GeneratedModel& generated : generated_models()) {
+    const std::string name = generated.name;
+    if (name != "hub" && name != "channel") continue;
+    ASSERT_TRUE(with_generated_code(generated.system(), generated.make_code,
+                                    [&](const engines::Layout& layout, engines::ModelCode& code) {
+                                      const std::optional<engines::FlatTables> tables =
+                                          engines::flat_tables(generated.system(), layout, code);
+                                      ASSERT_TRUE(tables);
+                                      affected[name] = tables->affected.size();
+                                      EXPECT_EQ(tables->first_affected.empty(),
+                                                tables->affected.empty());
+                                    }));
+  }
+  ASSERT_EQ(affected.size(), 2u);
+  EXPECT_EQ(affected["hub"], 0u);
+  // Channel: the 5 connectors of the channel atom, with the receiver's internal port (6)
+  // when they bind the receiver (deliver, ack_back, loss): 5 + 6 + 6 + 5 + 6, and the internal
+  // port's own, the receiver's 4.
+  EXPECT_EQ(affected["channel"], 32u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, GeneratedCode, ::testing::ValuesIn(generated_models()),

@@ -36,10 +36,11 @@ inline std::string run_trace(const engines::Model& model, engines::EngineKind en
   return out.str();
 }
 
-/// Whether the code `make_code` generated for `system` has a compiled step path that covers it
-/// (the optimised engine's runs above then take it).
-inline bool has_compiled_steps(const bipc::ir::System& system,
-                               const engines::CompiledModel::CodeFactory& make_code) {
+/// Calls `use(layout, code)` with the layout of `system` and the code `make_code` generated
+/// for it; false when either cannot be made.
+template <class Use>
+bool with_generated_code(const bipc::ir::System& system,
+                         const engines::CompiledModel::CodeFactory& make_code, Use use) {
   engines::Layout layout;
   if (!engines::build_layout(system, layout).empty()) return false;
   engines::StringPool strings;
@@ -51,7 +52,20 @@ inline bool has_compiled_steps(const bipc::ir::System& system,
     return false;
   }
   const std::unique_ptr<engines::ModelCode> code = make_code(system, functions, call, nullptr);
-  return code->make_steps(system, layout) != nullptr;
+  use(layout, *code);
+  return true;
+}
+
+/// Whether the code `make_code` generated for `system` has a compiled step path that covers it
+/// (the optimised engine's runs above then take it).
+inline bool has_compiled_steps(const bipc::ir::System& system,
+                               const engines::CompiledModel::CodeFactory& make_code) {
+  bool covered = false;
+  with_generated_code(system, make_code,
+                      [&](const engines::Layout& layout, engines::ModelCode& code) {
+                        covered = code.make_steps(system, layout) != nullptr;
+                      });
+  return covered;
 }
 
 }  // namespace smcbip::tests
