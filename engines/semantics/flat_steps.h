@@ -266,8 +266,7 @@ class FlatSteps final : public CompiledSteps {
   bool update_atom(Index a, const Frame& f) {
     const FlatTables::Atom& atom = t_.atoms[a];
     std::optional<AtomPortValue>* offers = offers_.data() + atom.first_offer;
-    const std::size_t ports = system_.atom_types[atom.type].ports.size();
-    for (std::size_t p = 0; p < ports; ++p) offers[p].reset();
+    for (std::uint32_t p = 0; p < atom.port_count; ++p) offers[p].reset();
     return code_.atom_offers(atom.type, state_->marking.data() + atom.places, f, offers) ==
            bipc::ir::kNone;
   }

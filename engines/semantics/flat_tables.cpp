@@ -213,10 +213,11 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     atom.params = static_cast<std::uint32_t>(layout.atom_params[a]);
     atom.clocks = static_cast<std::uint32_t>(layout.atom_clocks[a]);
     atom.first_offer = tables.offer_count;
+    atom.port_count = static_cast<std::uint32_t>(system.atom_types[t].ports.size());
     atom.has_internal_transitions = !layout.internal_transitions[t].empty();
     atom.has_clocks = !system.atom_types[t].clocks.empty();
     first_offer.push_back(tables.offer_count);
-    tables.offer_count += static_cast<std::uint32_t>(system.atom_types[t].ports.size());
+    tables.offer_count += atom.port_count;
     tables.atoms.push_back(atom);
   }
   for (Index k : layout.listed_connectors) {
