@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "engines/semantics/item_index.h"
+
 namespace smcbip::engines {
 
 /// Positions 0..n-1, each enabled or not. set() and find() take O(log(n / 64)): a Fenwick tree
@@ -35,15 +37,8 @@ class EnabledPositions {
   std::size_t total() const { return total_; }
   /// The k-th enabled position (k < total(), counting from 0 in position order).
   std::size_t find(std::size_t k) const {
-    // The word holding it, by the descent of ItemIndex::find (branch-free for the same reason).
-    std::size_t below = 0;
-    for (std::size_t step = top_step_; step != 0; step >>= 1) {
-      const std::size_t sum = tree_[below + step];
-      const std::size_t past = std::size_t{0} - static_cast<std::size_t>(sum <= k);
-      below += step & past;
-      k -= sum & past;
-    }
-    return below * 64 + select_in_word(words_[below], static_cast<unsigned>(k));
+    const std::size_t word = fenwick_find(tree_.data(), top_step_, k);
+    return word * 64 + select_in_word(words_[word], static_cast<unsigned>(k));
   }
 
   /// The position of the r-th set bit of `word` (r < its number of set bits), from bit 0.

@@ -25,19 +25,9 @@ void ItemIndex::set(std::size_t position, std::uint32_t count) {
 }
 
 std::pair<std::size_t, std::uint32_t> ItemIndex::find(std::size_t k) const {
-  // Descends the implicit tree: `below` ends as the number of positions whose counts sum to at
-  // most k, which is the position of the k-th item. Since k < total(), the descent never takes
-  // the whole padded range, so it stays within the tree. Without branches: which way it
-  // goes is as random as the chosen item, and mispredictions cost more than the loads.
-  std::size_t below = 0;
-  for (std::size_t step = top_step_; step != 0; step >>= 1) {
-    const std::size_t sum = tree_[below + step];
-    // All ones when the k-th item lies past this node (compilers keep a branch for `?:` here).
-    const std::size_t past = std::size_t{0} - static_cast<std::size_t>(sum <= k);
-    below += step & past;
-    k -= sum & past;
-  }
-  return {below, static_cast<std::uint32_t>(k)};
+  // Since k < total(), the descent never takes the whole padded range: it stays in the tree.
+  const std::size_t position = fenwick_find(tree_.data(), top_step_, k);
+  return {position, static_cast<std::uint32_t>(k)};
 }
 
 }  // namespace smcbip::engines

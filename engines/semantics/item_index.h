@@ -9,6 +9,23 @@
 
 namespace smcbip::engines {
 
+/// The descent of a Fenwick tree (1-based, `tree[i]` the sum of the counts over
+/// [i - lowbit(i), i), padded to `top_step` leaves, a power of two): the number of leaves whose
+/// counts sum to at most k, which is the leaf holding the k-th counted unit; `k` ends as that
+/// unit's rank within its leaf. k must be below the total. Without branches: which way it goes
+/// is as random as the unit sought, and mispredictions cost more than the loads.
+inline std::size_t fenwick_find(const std::size_t* tree, std::size_t top_step, std::size_t& k) {
+  std::size_t below = 0;
+  for (std::size_t step = top_step; step != 0; step >>= 1) {
+    const std::size_t sum = tree[below + step];
+    // All ones when the k-th unit lies past this node (compilers keep a branch for `?:` here).
+    const std::size_t past = std::size_t{0} - static_cast<std::size_t>(sum <= k);
+    below += step & past;
+    k -= sum & past;
+  }
+  return below;
+}
+
 /// Counts of items at positions 0..n-1 (for the runtime: the listed connectors, then the
 /// internal ports, in the order Runtime::compute_items lists their items) kept in a Fenwick tree
 /// (P. M. Fenwick, "A new data structure for cumulative frequency tables", Software: Practice
