@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -53,6 +54,7 @@ class FlatSteps final : public CompiledSteps {
     touched_.assign(t_.atoms.size(), 0);
     chosen_.assign(t_.ports.size(), Flag::Off);
     recomputed_.assign(t_.positions(), 0);
+    items_.resize(t_.positions());
   }
 
   bool begin(const Run& run) override {
@@ -109,33 +111,37 @@ class FlatSteps final : public CompiledSteps {
   /// Runtime::compute_items lists them), then the Scheduler's choice among them.
   Outcome timed_step(bool at_limit, StepInfo& info) {
     const TimeValue now = state_->now;
+    const auto positions = static_cast<std::uint32_t>(t_.positions());
     Interval waiting = Interval::from(now);
-    for (std::uint32_t p = 0; p < t_.positions(); ++p) {
+    for (std::uint32_t p = 0; p < positions; ++p) {
       if (enabled_[p] == Flag::On && raw_[p].urgency != bipc::Urgency::Lazy) {
         narrow(waiting, detail::wait(raw_[p], now));
       }
     }
-    items_.clear();
-    for (std::uint32_t p = 0; p < t_.positions(); ++p) {
+    // items_ has room for every position (begin): an item is written in place and kept when
+    // its window is not empty.
+    std::size_t listed = 0;
+    for (std::uint32_t p = 0; p < positions; ++p) {
       if (enabled_[p] == Flag::Off) continue;
       // Copied field by field for the reason recompute_timed gives.
-      Listed& item = items_.emplace_back();
+      Listed& item = items_[listed];
       item.position = p;
       item.window.left = raw_[p].interval.left;
       item.window.right = raw_[p].interval.right;
       item.window.left_open = raw_[p].interval.left_open;
       item.window.right_open = raw_[p].interval.right_open;
       narrow(item.window, waiting);
-      if (item.window.empty()) items_.pop_back();
+      listed += item.window.empty() ? 0 : 1;
     }
-    if (items_.empty()) {
+    items_count_ = listed;
+    if (listed == 0) {
       return waiting.right == kPlusInfinity ? Outcome::Deadlock : Outcome::Timelock;
     }
     if (at_limit) return Outcome::Limit;
     const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
     std::optional<std::pair<std::size_t, TimeValue>> choice;
     if (planner_ == nullptr) {
-      choice = random_race(items_.size(), window, now, asap_, first_enabled_, *random_);
+      choice = random_race(items_count_, window, now, asap_, first_enabled_, *random_);
     } else {
       try {
         if (!race(choice)) return Outcome::Beyond;
@@ -151,7 +157,7 @@ class FlatSteps final : public CompiledSteps {
   /// its window, or after replan_within_windows; false when a date cannot be drawn.
   bool race(std::optional<std::pair<std::size_t, TimeValue>>& choice) {
     ++generation_;
-    for (Listed& item : items_) {
+    for (Listed& item : listed_items()) {
       DatePlanner::Plan& plan = plans_[item.position];
       const auto stochastic = [&] { return t_.stochastic[item.position]; };
       if (!planner_->renew(*runtime_, plan, generation_, raw_[item.position], stochastic,
@@ -162,14 +168,14 @@ class FlatSteps final : public CompiledSteps {
     }
     const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
     const auto date = [&](std::size_t i) { return items_[i].date; };
-    choice = earliest_in_window(items_.size(), window, date, *random_);
+    choice = earliest_in_window(items_count_, window, date, *random_);
     if (!choice) {
-      for (Listed& item : items_) {
+      for (Listed& item : listed_items()) {
         if (t_.stochastic[item.position]) continue;
         item.date = planner_->draw_timed(raw_[item.position].urgency, item.window);
         plans_[item.position].date = item.date;
       }
-      choice = earliest_in_window(items_.size(), window, date, *random_);
+      choice = earliest_in_window(items_count_, window, date, *random_);
     }
     if (choice) DatePlanner::fired(plans_[items_[choice->first].position]);
     return true;
@@ -434,7 +440,9 @@ class FlatSteps final : public CompiledSteps {
   // the step; stochastic mode: the plans per position, the race count, a draw's error.
   std::vector<Flag> enabled_;
   std::vector<Constraint> raw_;
-  std::vector<Listed> items_;
+  std::vector<Listed> items_;  // one per position; the first items_count_ are the step's
+  std::size_t items_count_ = 0;
+  std::span<Listed> listed_items() { return {items_.data(), items_count_}; }
   std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
   std::uint64_t generation_ = 1;
   std::string problem_;
