@@ -30,7 +30,6 @@ void RandomStream::set_below(std::uint64_t n) {
     std::abort();
   }
   below_n_ = n;
-  below_threshold_ = (0 - n) % n;
   below_magic_ = 0;
   below_repeats_ = 0;
 }

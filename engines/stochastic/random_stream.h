@@ -54,12 +54,13 @@ class RandomStream {
   }
 
   /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
-  /// as OpenBSD's arc4random_uniform): x mod n of the first draw x not in that block. n must be
-  /// positive; n == 0 aborts. Inline, with the rejection threshold of the last n kept, and its
-  /// reciprocal once n was drawn below a few times in a row: schedulers draw among the same
-  /// number of items step after step, and a 64-bit division is a good part of a step where the
-  /// reciprocal costs two multiplications; computing it costs a 128-bit division, which bounds
-  /// changing from draw to draw (the planner's uniform dates) should not pay at every draw.
+  /// as OpenBSD's arc4random_uniform): x mod n of the first draw x not in that block
+  /// [0, 2^64 mod n). n must be positive; n == 0 aborts. Inline, and without division where it
+  /// can: the block lies below n, so only a draw below n (rare unless n is huge) needs its end;
+  /// and from the fourth draw in a row below the same n, x mod n uses n's reciprocal, two
+  /// multiplications where a 64-bit division is a good part of a scheduler's step. Computing
+  /// the reciprocal costs a 128-bit division, which bounds that change from draw to draw (the
+  /// planner's uniform dates) should not pay each time.
   std::uint64_t below(std::uint64_t n) {
     if (n != below_n_) [[unlikely]] {
       set_below(n);
@@ -68,7 +69,9 @@ class RandomStream {
     }
     while (true) {
       const std::uint64_t x = next_u64();
-      if (x < below_threshold_) continue;
+      if (x < n && x < (0 - n) % n) [[unlikely]] {
+        continue;
+      }
       return below_magic_ == 0 ? x % n : x - below_quotient(x) * n;
     }
   }
@@ -88,9 +91,9 @@ class RandomStream {
   std::uint64_t key0_;
   std::uint64_t key1_;
   std::uint64_t counter_ = 0;
-  // below(): the last n and 2^64 mod n; draws below it fall in the incomplete block
-  // [0, 2^64 mod n) and are redrawn, the rest cover each residue floor(2^64 / n) times.
-  std::uint64_t below_n_ = 0, below_threshold_ = 0;
+  // below(): the last n. Draws in the incomplete block [0, 2^64 mod n) are redrawn, the rest
+  // cover each residue floor(2^64 / n) times.
+  std::uint64_t below_n_ = 0;
   // floor(x / below_n_) by multiplication (Granlund and Montgomery, "Division by invariant
   // integers using multiplication", PLDI 1994, figure 4.1): exact for every 64-bit x. The
   // magic number is at least 1; 0 means not computed yet.
@@ -103,7 +106,7 @@ class RandomStream {
     const auto high = static_cast<std::uint64_t>((Wide{below_magic_} * x) >> 64);
     return (high + ((x - high) >> below_shift1_)) >> below_shift2_;
   }
-  /// Keeps n and its threshold for below(); aborts on n == 0.
+  /// Keeps n for below(); aborts on n == 0.
   void set_below(std::uint64_t n);
   void set_reciprocal(std::uint64_t n);
 };
