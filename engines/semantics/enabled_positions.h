@@ -28,7 +28,7 @@ class EnabledPositions {
     // Unsigned wrap-around: adding 0 - 1 subtracts one.
     const std::size_t delta = enabled ? 1 : std::size_t{0} - 1;
     total_ += delta;
-    for (std::size_t i = w + 1; i < tree_.size(); i += i & (~i + 1)) tree_[i] += delta;
+    fenwick_add(tree_.data(), tree_.size(), w, delta);
   }
   bool enabled(std::size_t position) const {
     return (words_[position / 64] >> (position % 64) & 1) != 0;

@@ -44,11 +44,7 @@ template <class Code>
 class FlatSteps final : public CompiledSteps {
  public:
   FlatSteps(Code& code, const bipc::ir::System& system, const Layout& layout, FlatTables tables)
-      : code_(code),
-        system_(system),
-        layout_(layout),
-        t_(std::move(tables)),
-        gather_touched_(t_.first_affected.empty()) {
+      : code_(code), system_(system), layout_(layout), t_(std::move(tables)) {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
     touched_.assign(t_.atoms.size(), 0);
@@ -187,7 +183,7 @@ class FlatSteps final : public CompiledSteps {
     state_->now = date;
     info = StepInfo{};
     info.time = date;
-    if (gather_touched_) {
+    if (gathers_touched()) {
       ++stamp_;
       touched_list_.clear();
     }
@@ -203,7 +199,7 @@ class FlatSteps final : public CompiledSteps {
         info.port = internal.port;
         if (!fire_port(internal.atom, internal.port)) return Outcome::Beyond;
       }
-      if (t_.first_affected.empty()) {
+      if (gathers_touched()) {
         recompute_touched();
       } else {
         // Recomputing an item its firing left as it was gives it again: a superset of the
@@ -217,6 +213,9 @@ class FlatSteps final : public CompiledSteps {
     }
     return beyond_ ? Outcome::Beyond : Outcome::Fired;
   }
+
+  /// Whether a step gathers the atoms it touched, the tables listing no affected positions.
+  bool gathers_touched() const { return t_.first_affected.empty(); }
 
   /// Recomputes the positions of the atoms the step touched, each once.
   void recompute_touched() {
@@ -283,7 +282,7 @@ class FlatSteps final : public CompiledSteps {
     const FlatTables::Atom& atom = t_.atoms[a];
     const std::optional<AtomPortValue>& offer = offers_[atom.first_offer + port];
     if (!offer) return true;
-    if (gather_touched_ && touched_[a] != stamp_) {
+    if (gathers_touched() && touched_[a] != stamp_) {
       touched_[a] = stamp_;
       touched_list_.push_back(a);
     }
@@ -429,8 +428,7 @@ class FlatSteps final : public CompiledSteps {
   std::vector<Flag> eager_;  // per position: its item is enabled and eager
   std::ptrdiff_t eager_count_ = 0;
   // The atoms a step fired, and the positions it recomputed, marked by the step's stamp.
-  // Only where the tables list no affected positions.
-  bool gather_touched_ = false;
+  // Only where the tables list no affected positions (gathers_touched).
   std::uint64_t stamp_ = 0;
   std::vector<std::uint64_t> touched_, recomputed_;
   std::vector<Index> touched_list_;

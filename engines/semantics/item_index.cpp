@@ -21,7 +21,7 @@ void ItemIndex::set(std::size_t position, std::uint32_t count) {
   const std::size_t delta = static_cast<std::size_t>(count) - counts_[position];
   counts_[position] = count;
   total_ += delta;
-  for (std::size_t i = position + 1; i < tree_.size(); i += i & (~i + 1)) tree_[i] += delta;
+  fenwick_add(tree_.data(), tree_.size(), position, delta);
 }
 
 std::pair<std::size_t, std::uint32_t> ItemIndex::find(std::size_t k) const {

@@ -26,6 +26,12 @@ inline std::size_t fenwick_find(const std::size_t* tree, std::size_t top_step, s
   return below;
 }
 
+/// Adds `delta` (two's complement for a decrease) to leaf `leaf` (0-based) of a Fenwick tree as
+/// fenwick_find reads it, of `size` entries including the unused tree[0].
+inline void fenwick_add(std::size_t* tree, std::size_t size, std::size_t leaf, std::size_t delta) {
+  for (std::size_t i = leaf + 1; i < size; i += i & (~i + 1)) tree[i] += delta;
+}
+
 /// Counts of items at positions 0..n-1 (for the runtime: the listed connectors, then the
 /// internal ports, in the order Runtime::compute_items lists their items) kept in a Fenwick tree
 /// (P. M. Fenwick, "A new data structure for cumulative frequency tables", Software: Practice

@@ -92,19 +92,16 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   }
   // Read once: the consumer may close a point while the run is made.
   judged_.resize(n);
-  for (std::size_t p = 0; p < n; ++p)
-    judged_[p] = !sweep_ && !done[p].load(std::memory_order_relaxed);
   for (std::size_t p = 0; p < n; ++p) {
+    judged_[p] = !sweep_ && !done[p].load(std::memory_order_relaxed);
     if (!judged_[p]) continue;
-    engines::RunObserver* o = monitors_.empty()
-                                  ? static_cast<engines::RunObserver*>(extrema_[p].get())
-                                  : monitors_[p].get();
     if (monitors_.empty()) {
       extrema_[p]->reset();
+      observer_->watch(extrema_[p].get());
     } else {
       monitors_[p]->reset();
+      observer_->watch(monitors_[p].get());
     }
-    observer_->watch(o);
   }
   observer_->start();
   trace_.str({});
