@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "engines/stochastic/random_stream.h"
 #include "engines/time_value.h"
@@ -21,12 +22,13 @@ struct SharedWindowChoice {
   TimeValue date = 0;
 };
 
-/// choose_in_shared_window's draws, kept by the scheduler or step path that makes them: the
-/// delay floor(-mean ln u) is 0 whenever u lies above exp(-c / mean) for a c just under 1, so
-/// above that cut, kept for the last mean, the logarithm (a good part of a step) is skipped.
-/// The margin 1 - c = 2^-20 dwarfs the rounding errors of exp, log and the product (a few
-/// units of 2^-53), so the skipped logarithm would have given 0 too: the dates are those of
-/// the formula, bit for bit.
+/// The draws of SharedWindowChoice, kept by the scheduler or step path that makes them. The
+/// delay floor(-mean ln u) is k exactly when u lies between exp(-(k + 1)/mean) and
+/// exp(-k/mean): cuts just inside those bounds, kept for the last mean, tell the delay without
+/// the logarithm (a good part of a step) unless it is large or u lies next to a bound. The
+/// margin 2^-20 on the delay dwarfs the rounding errors of exp, log and the product (a few
+/// units of 2^-53 of a delay below kCuts times a mean of at most 10), so the skipped logarithm
+/// would have given the same delay: the dates are those of the formula, bit for bit.
 class SharedWindowChooser {
  public:
   SharedWindowChoice choose(std::size_t n, TimeValue now, bool open_ended, bool asap,
@@ -34,20 +36,46 @@ class SharedWindowChooser {
     const auto chosen = static_cast<std::size_t>(random.below(n));
     if (asap || !open_ended) return {chosen, now};
     const double mean = first_enabled ? 10.0 : 10.0 / static_cast<double>(n);
-    if (mean != mean_) [[unlikely]] {
-      mean_ = mean;
-      zero_delay_above_ = std::exp(-(1.0 - 0x1p-20) / mean);
-    }
-    const double u = random.uniform01_open();
-    if (u > zero_delay_above_) return {chosen, now};
+    if (mean != mean_) [[unlikely]]
+      set_mean(mean);
+    return {chosen, now + delay(random.uniform01_open())};
+  }
+
+  /// floor(-mean ln u) for the last mean, u in (0, 1).
+  TimeValue delay(double u) const {
+    if (u > at_most_[0]) return 0;
+    // k: the cuts at or above u, counted two at a time without branches (as random as u).
+    const Pair both = {u, u};
+    Count at_or_above = {0, 0};
+    for (const Pair& cuts : at_most_pairs_) at_or_above -= (both <= cuts);  // true is -1
+    const auto k = static_cast<int>(at_or_above[0] + at_or_above[1]);
+    if (k < kCuts && u < at_least_[k]) return k;
     // The conversion truncates, which is floor on the delay, positive as u < 1 (and a call to
     // floor where the target lacks SSE4.1's rounding instruction).
-    return {chosen, now + static_cast<TimeValue>(-mean * std::log(u))};
+    return static_cast<TimeValue>(-mean_ * std::log(u));
   }
 
  private:
+  static constexpr int kCuts = 16;
+  static constexpr double kMargin = 0x1p-20;
+  // Two lanes of a vector register (GCC's and Clang's vector extensions: SSE2 on x86-64,
+  // NEON on AArch64); comparing them gives -1 where true.
+  using Pair = double __attribute__((vector_size(16)));
+  using Count = std::int64_t __attribute__((vector_size(16)));
+
+  void set_mean(double mean) {
+    mean_ = mean;
+    for (int k = 0; k < kCuts; ++k) {
+      at_most_[k] = std::exp(-(k + 1 - kMargin) / mean);  // u above it: the delay is at most k
+      at_least_[k] = std::exp(-(k + kMargin) / mean);     // u below it: the delay is at least k
+      at_most_pairs_[k / 2][k % 2] = at_most_[k];
+    }
+  }
+
   double mean_ = 0;
-  double zero_delay_above_ = 1;
+  double at_most_[kCuts] = {1};
+  double at_least_[kCuts] = {};
+  Pair at_most_pairs_[kCuts / 2] = {};
 };
 
 }  // namespace smcbip::engines

@@ -181,6 +181,35 @@ TEST(SharedWindowChooser, DatesAreTheFormulasBitForBit) {
   EXPECT_EQ(std::floor(-5.0 * std::log(std::nextafter(std::exp(-0.2), 1.0))), 0.0);
 }
 
+// The delays next to every bound exp(-k / mean) where the formula's delay turns from k - 1 to
+// k, a few units of 2^-53 and a few parts in 10^7 and 10^5 either side, and anywhere in (0, 1).
+TEST(SharedWindowChooser, DelaysNextToTheirBoundsAreTheFormulas) {
+  RandomStream random(5, 0);
+  for (const std::size_t n : {1, 2, 3, 5, 10, 11, 500}) {
+    SharedWindowChooser chooser;
+    chooser.choose(n, 0, true, false, false, random);  // keeps the mean 10 / n
+    const double mean = 10.0 / static_cast<double>(n);
+    const auto check = [&](double u) {
+      if (!(u > 0.0 && u < 1.0)) return;
+      ASSERT_EQ(chooser.delay(u), static_cast<TimeValue>(std::floor(-mean * std::log(u))))
+          << "mean " << mean << ", u = " << u;
+    };
+    for (int k = 0; k <= 40; ++k) {
+      const double bound = std::exp(-k / mean);
+      double below = bound, above = bound;
+      for (int step = 0; step < 8; ++step) {
+        check(below = std::nextafter(below, 0.0));
+        check(above = std::nextafter(above, 1.0));
+      }
+      for (const double relative : {1e-7, 1e-5}) {
+        check(bound * (1 - relative));
+        check(bound * (1 + relative));
+      }
+    }
+    for (int draw = 0; draw < 20000; ++draw) check(random.uniform01_open());
+  }
+}
+
 std::string engine_name(const ::testing::TestParamInfo<EngineKind>& info) {
   return tests::engine_label(info.param);
 }
