@@ -88,7 +88,7 @@ class FlatSteps final : public CompiledSteps {
     if (at_limit) return Outcome::Limit;
     const SharedWindowChoice choice =
         shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    return fire(static_cast<std::uint32_t>(index_.find(choice.chosen)), choice.date, info);
+    return fire<false>(static_cast<std::uint32_t>(index_.find(choice.chosen)), choice.date, info);
   }
 
  private:
@@ -146,7 +146,7 @@ class FlatSteps final : public CompiledSteps {
       }
       if (!choice) return Outcome::Timelock;
     }
-    return fire(items_[choice->first].position, choice->second, info);
+    return fire<true>(items_[choice->first].position, choice->second, info);
   }
 
   /// Scheduler::race over items_: DatePlanner::plan's kept or new dates, then the earliest in
@@ -178,7 +178,8 @@ class FlatSteps final : public CompiledSteps {
   }
 
   /// Fires the item at position `p` at `date`, then recomputes the items of the atoms it
-  /// touched.
+  /// touched. Instantiated per mode, so that each has its recomputation inline.
+  template <bool Timed>
   Outcome fire(std::uint32_t p, TimeValue date, StepInfo& info) {
     state_->now = date;
     info = StepInfo{};
@@ -204,8 +205,15 @@ class FlatSteps final : public CompiledSteps {
       } else {
         // Recomputing an item its firing left as it was gives it again: a superset of the
         // touched atoms' positions does, and needs no deduplication.
-        for (std::uint32_t i = t_.first_affected[p]; i < t_.first_affected[p + 1]; ++i) {
-          recompute(t_.affected[i]);
+        // Inline: a call per position cost more than checking one that stays disabled.
+        const std::uint32_t* q = t_.affected.data() + t_.first_affected[p];
+        const std::uint32_t* const end = t_.affected.data() + t_.first_affected[p + 1];
+        for (; q != end; ++q) {
+          if constexpr (Timed) {
+            recompute_timed(*q);
+          } else {
+            recompute_untimed(*q);
+          }
         }
       }
     } catch (const CodeFault&) {
@@ -321,8 +329,13 @@ class FlatSteps final : public CompiledSteps {
   void recompute(std::uint32_t p) {
     if (timed_) {
       recompute_timed(p);
-      return;
+    } else {
+      recompute_untimed(p);
     }
+  }
+
+  /// recompute on an untimed layout: whether the item is enabled, and eager.
+  void recompute_untimed(std::uint32_t p) {
     bool enabled = true;
     bool eager = false;
     if (p < t_.connectors.size() && t_.connectors[p].triggered) {
@@ -372,7 +385,7 @@ class FlatSteps final : public CompiledSteps {
   /// recompute on a timed layout: the item's constraint too, the intersection of its ports'
   /// (Runtime::add_choice); a connector whose ports' windows do not meet is not enabled, and
   /// its guard not run (Runtime::keep_value_if_allowed).
-  void recompute_timed(std::uint32_t p) {
+  [[gnu::always_inline]] void recompute_timed(std::uint32_t p) {
     // Narrowed in place, field by field: a Constraint built on the stack and copied whole
     // stalled on store forwarding.
     Constraint& raw = raw_[p];
@@ -400,7 +413,12 @@ class FlatSteps final : public CompiledSteps {
 
   /// Runtime::connector_code_allows: the connector's data copied into its value, the guard, then
   /// `up` when it holds.
-  bool value_allowed(const FlatTables::Connector& c) {
+  /// Inline for a connector without data or code (the check), out of line otherwise.
+  [[gnu::always_inline]] bool value_allowed(const FlatTables::Connector& c) {
+    if (c.data_size == 0 && !c.guarded) return true;
+    return value_allowed_by_code(c);
+  }
+  bool value_allowed_by_code(const FlatTables::Connector& c) {
     std::copy_n(state_->data.begin() + c.data, c.data_size, value_data_.begin() + c.value_data);
     if (!c.guarded) return true;
     const PortContext context{this, &c};
