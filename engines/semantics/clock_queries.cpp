@@ -25,9 +25,6 @@ TimeValue Runtime::clock_reaches(Index atom, Index clock, double value) const {
   return state_.now + static_cast<TimeValue>(delay);
 }
 
-namespace {
-
-/// The value of a parameter written as a number (the usual case), which needs no frame.
 std::optional<double> number_param(const bipc::ir::Code& code) {
   using bipc::ir::Op;
   const std::vector<bipc::ir::Instr>& in = code.instrs;
@@ -37,8 +34,6 @@ std::optional<double> number_param(const bipc::ir::Code& code) {
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 void Runtime::stochastic_params(Index atom, Index port, std::vector<double>& out) {
   const auto& stochastic = system_.atom_types[system_.atoms[atom].type].ports[port].stochastic;

@@ -459,4 +459,8 @@ class Runtime {
   std::unique_ptr<ParallelFiring> parallel_;
 };
 
+/// The value of a @stochastic parameter written as a number (the usual case), which needs no
+/// frame; nullopt for any other expression.
+std::optional<double> number_param(const bipc::ir::Code& code);
+
 }  // namespace smcbip::engines

@@ -54,8 +54,30 @@ DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributio
     first_port_.push_back(stochastic_ports_.size());
     for (const bipc::ir::Port& port : system.atom_types[atom.type].ports) {
       stochastic_ports_.push_back(port.stochastic ? 1 : 0);
+      fixed_distributions_.push_back(port.stochastic ? fixed_distribution(*port.stochastic)
+                                                     : std::nullopt);
     }
   }
+}
+
+std::optional<DateDistribution> DatePlanner::fixed_distribution(
+    const bipc::ir::Stochastic& annotation) const {
+  std::vector<double> params;
+  for (const bipc::ir::Code& code : annotation.params) {
+    const std::optional<double> number = number_param(code);
+    if (!number) return std::nullopt;
+    params.push_back(*number);
+  }
+  const EmpiricalCdf* custom = nullptr;
+  if (annotation.distribution == bipc::ir::Distribution::Custom) {
+    const auto found = custom_.find(annotation.custom_file);
+    if (found == custom_.end()) return std::nullopt;
+    custom = &found->second;
+  }
+  // Invalid parameters are left to each draw, which reports them.
+  auto made = DateDistribution::make(annotation.distribution, params, custom);
+  if (auto* distribution = std::get_if<DateDistribution>(&made)) return *distribution;
+  return std::nullopt;
 }
 
 std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, Index>> key) const {
@@ -190,19 +212,24 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
                                   TimeValue& date, std::string& error) {
   const auto& type = system_.atom_types[system_.atoms[atom].type];
   const bipc::ir::Stochastic& annotation = *type.ports[port].stochastic;
-  runtime.stochastic_params(atom, port, params_);
-  const EmpiricalCdf* custom = nullptr;
-  if (annotation.distribution == bipc::ir::Distribution::Custom) {
-    custom = &custom_.at(annotation.custom_file);
-  }
   // Only error messages name the port: no string is built for a successful draw.
   auto where = [&] { return runtime.layout().atom_names[atom] + "." + type.ports[port].name; };
-  auto made = DateDistribution::make(annotation.distribution, params_, custom);
-  if (auto* message = std::get_if<std::string>(&made)) {
-    error = "@stochastic distribution of " + where() + ": " + *message;
-    return false;
+  std::optional<DateDistribution> made_now;
+  const std::optional<DateDistribution>& fixed = fixed_distributions_[first_port_[atom] + port];
+  if (!fixed) {
+    runtime.stochastic_params(atom, port, params_);
+    const EmpiricalCdf* custom = nullptr;
+    if (annotation.distribution == bipc::ir::Distribution::Custom) {
+      custom = &custom_.at(annotation.custom_file);
+    }
+    auto made = DateDistribution::make(annotation.distribution, params_, custom);
+    if (auto* message = std::get_if<std::string>(&made)) {
+      error = "@stochastic distribution of " + where() + ": " + *message;
+      return false;
+    }
+    made_now = std::get<DateDistribution>(made);
   }
-  const DateDistribution& distribution = std::get<DateDistribution>(made);
+  const DateDistribution& distribution = fixed ? *fixed : *made_now;
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());

@@ -120,6 +120,8 @@ class DatePlanner {
   Plan& plan_of(const Runtime& runtime, const Item& item);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
+  /// The distribution of an annotation whose parameters are all numbers, when they are valid.
+  std::optional<DateDistribution> fixed_distribution(const bipc::ir::Stochastic& annotation) const;
   /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
   /// bind one atom port), if any.
   std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;
@@ -144,6 +146,9 @@ class DatePlanner {
   Key key_;
   std::vector<std::pair<Index, Index>> ports_;  // the atom ports of the item being drawn
   std::vector<double> params_;                  // of the @stochastic annotation being drawn from
+  // Per atom port, as stochastic_ports_: its distribution when its parameters are numbers
+  // (made once, not at each draw) and valid.
+  std::vector<std::optional<DateDistribution>> fixed_distributions_;
   // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
   std::vector<std::size_t> first_port_;
   std::vector<std::uint8_t> stochastic_ports_;
