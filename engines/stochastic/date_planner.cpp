@@ -60,7 +60,7 @@ DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributio
   }
 }
 
-std::optional<DateDistribution> DatePlanner::fixed_distribution(
+std::optional<DatePlanner::Fixed> DatePlanner::fixed_distribution(
     const bipc::ir::Stochastic& annotation) const {
   std::vector<double> params;
   for (const bipc::ir::Code& code : annotation.params) {
@@ -76,7 +76,7 @@ std::optional<DateDistribution> DatePlanner::fixed_distribution(
   }
   // Invalid parameters are left to each draw, which reports them.
   auto made = DateDistribution::make(annotation.distribution, params, custom);
-  if (auto* distribution = std::get_if<DateDistribution>(&made)) return *distribution;
+  if (auto* distribution = std::get_if<DateDistribution>(&made)) return Fixed{*distribution};
   return std::nullopt;
 }
 
@@ -215,7 +215,7 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   // Only error messages name the port: no string is built for a successful draw.
   auto where = [&] { return runtime.layout().atom_names[atom] + "." + type.ports[port].name; };
   std::optional<DateDistribution> made_now;
-  const std::optional<DateDistribution>& fixed = fixed_distributions_[first_port_[atom] + port];
+  std::optional<Fixed>& fixed = fixed_distributions_[first_port_[atom] + port];
   if (!fixed) {
     runtime.stochastic_params(atom, port, params_);
     const EmpiricalCdf* custom = nullptr;
@@ -229,11 +229,20 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
     }
     made_now = std::get<DateDistribution>(made);
   }
-  const DateDistribution& distribution = fixed ? *fixed : *made_now;
+  const DateDistribution& distribution = fixed ? fixed->distribution : *made_now;
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  const double below = distribution.cdf(lower);
+  double below = 0.0;
+  if (fixed && fixed->lower == lower) {
+    below = fixed->below;
+  } else {
+    below = distribution.cdf(lower);
+    if (fixed) {
+      fixed->lower = lower;
+      fixed->below = below;
+    }
+  }
   double sample = 0.0;
   if (below > 0.0) {
     const std::optional<double> above = distribution.sample_above(lower, below, random_);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <span>
@@ -94,6 +95,13 @@ class DatePlanner {
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
 
  private:
+  // A distribution made once, and its last truncation point with the mass below it: a clock
+  // reset when its port is offered truncates at 0 every time.
+  struct Fixed {
+    DateDistribution distribution;
+    double lower = std::numeric_limits<double>::quiet_NaN();  // equal to nothing at first
+    double below = 0.0;
+  };
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.
   using Key = std::vector<std::pair<Index, Index>>;
@@ -121,7 +129,7 @@ class DatePlanner {
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
   /// The distribution of an annotation whose parameters are all numbers, when they are valid.
-  std::optional<DateDistribution> fixed_distribution(const bipc::ir::Stochastic& annotation) const;
+  std::optional<Fixed> fixed_distribution(const bipc::ir::Stochastic& annotation) const;
   /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
   /// bind one atom port), if any.
   std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;
@@ -146,9 +154,9 @@ class DatePlanner {
   Key key_;
   std::vector<std::pair<Index, Index>> ports_;  // the atom ports of the item being drawn
   std::vector<double> params_;                  // of the @stochastic annotation being drawn from
-  // Per atom port, as stochastic_ports_: its distribution when its parameters are numbers
-  // (made once, not at each draw) and valid.
-  std::vector<std::optional<DateDistribution>> fixed_distributions_;
+  // Per atom port, as stochastic_ports_: its distribution when its parameters are numbers and
+  // valid.
+  std::vector<std::optional<Fixed>> fixed_distributions_;
   // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
   std::vector<std::size_t> first_port_;
   std::vector<std::uint8_t> stochastic_ports_;
