@@ -176,6 +176,75 @@ TEST(StochasticEngine, MissedSupportIsAModelError) {
   EXPECT_NE(out.str().find("[BIP ENGINE]: ERROR: missed support"), std::string::npos) << out.str();
 }
 
+/// Records the date (ms) of every interaction of a run.
+class InteractionDates : public RunObserver {
+ public:
+  bool observe(const StepInfo& step, const StateView& /*state*/) override {
+    if (step.fired == StepInfo::Fired::Interaction) {
+      dates_ms.push_back(static_cast<double>(step.time) / 1e6);
+    }
+    return true;
+  }
+  std::vector<double> dates_ms;
+};
+
+// One port drawn from again and again in a run, truncated at 1 ms and at 3 ms in turn: each
+// draw uses its own truncation's mass below, which the planner keeps only for the last
+// truncation point. Exponential(3): conditioned on X > T, F(x) = (F(x) - F(T)) / (1 - F(T)).
+TEST(StochasticEngine, RepeatedDrawsKeepEachTruncationsMass) {
+  TempDir dir;
+  const fs::path file = dir.write("alternate.bip", R"(package alternate
+  port type P()
+  connector type Solo(P p)
+    define p
+  end
+  atom type A()
+    clock x unit millisecond
+    @stochastic(dist="exponential", clk=x, param="3")
+    export port P fire()
+    port P wait()
+    place W1, F1, W3, F3
+    initial to W1 do { x = 0; }
+    on wait from W1 to F1 provided (x == 1) eager
+    on fire from F1 to W3 do { x = 0; }
+    on wait from W3 to F3 provided (x == 3) eager
+    on fire from F3 to W1 do { x = 0; }
+  end
+  compound type Top()
+    component A a()
+    connector Solo c(a.fire)
+  end
+end
+)");
+  const bipc::ir::System system = load(file, "Top()");
+  SimulateOptions options;
+  options.seed = kSeed;
+  options.silent = true;
+  options.limit = 4 * 5000;  // two internal steps and two draws per round
+  const Externs externs = Externs::with_builtins();
+  Simulator simulator(system, options, externs);
+  std::ostringstream sink;
+  InteractionDates observed;
+  const RunResult result = simulator.run(0, RunStreams{sink, sink}, &observed);
+  ASSERT_EQ(result.code, kRunOk) << result.message;
+  ASSERT_EQ(observed.dates_ms.size(), 2 * 5000u);
+  std::vector<double> after_1, after_3;  // the clock's value at each firing: the sample
+  double reset = 0.0;
+  for (std::size_t i = 0; i < observed.dates_ms.size(); ++i) {
+    (i % 2 == 0 ? after_1 : after_3).push_back(observed.dates_ms[i] - reset);
+    reset = observed.dates_ms[i];
+  }
+  for (const auto& [truncation, samples] : {std::pair{1.0, &after_1}, std::pair{3.0, &after_3}}) {
+    SCOPED_TRACE(truncation);
+    const double below = gsl_cdf_exponential_P(truncation, 3);
+    auto conditional = [&](double x) {
+      return (gsl_cdf_exponential_P(x, 3) - below) / (1.0 - below);
+    };
+    for (double d : *samples) ASSERT_GT(d, truncation);
+    EXPECT_LT(tests::kolmogorov_statistic(*samples, conditional), tests::kolmogorov_critical());
+  }
+}
+
 fs::path source_model(const std::string& name) {
   return fs::path(SMCBIP_SOURCE_DIR) / "models" / name;
 }
