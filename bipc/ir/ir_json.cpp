@@ -161,7 +161,10 @@ std::string instruction_text(const Instr& in, const System& system) {
       return text + ".float " + number_text(in.imm.f);
     case Op::PushString:
       return text + ".string " +
-             (in.index < system.strings.size() ? json(system.strings[in.index]).dump() : "?");
+             (in.index < system.strings.size()
+                  ? json(system.strings[in.index])
+                        .dump(-1, ' ', false, json::error_handler_t::replace)
+                  : "?");
     case Op::Load:
     case Op::Store:
       return text + " " + slot_text(in, system);

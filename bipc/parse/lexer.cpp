@@ -1,6 +1,7 @@
 // The BIP2 lexer: keywords, names, literals, comments and operators of Bip2.g, with positions.
 #include "bipc/parse/lexer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <limits>
 #include <utility>
@@ -25,28 +26,51 @@ void append_utf8(std::string& out, std::uint32_t code_point) {
   } else if (code_point < 0x800) {
     out += static_cast<char>(0xC0 | (code_point >> 6));
     out += static_cast<char>(0x80 | (code_point & 0x3F));
-  } else {
+  } else if (code_point < 0x10000) {
     out += static_cast<char>(0xE0 | (code_point >> 12));
+    out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code_point & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (code_point >> 18));
+    out += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
     out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
     out += static_cast<char>(0x80 | (code_point & 0x3F));
   }
 }
 
-// The length of the UTF-8 sequence starting at text[pos], or 1 when it is not a valid one.
-std::size_t utf8_length(std::string_view text, std::size_t pos) {
-  auto byte = static_cast<unsigned char>(text[pos]);
-  std::size_t length = 1;
-  if (byte >= 0xC2 && byte <= 0xDF)
+// The length of the well-formed UTF-8 sequence starting at text[pos], or 0 when none starts
+// there: the Unicode Standard's table 3-7, without overlong forms, surrogates or code points
+// beyond U+10FFFF (what JSON output and other UTF-8 readers accept).
+std::size_t well_formed_utf8(std::string_view text, std::size_t pos) {
+  auto byte_at = [&](std::size_t i) { return static_cast<unsigned char>(text[pos + i]); };
+  const unsigned char lead = byte_at(0);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned char second_low = 0x80, second_high = 0xBF;
+  if (lead >= 0xC2 && lead <= 0xDF) {
     length = 2;
-  else if (byte >= 0xE0 && byte <= 0xEF)
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
     length = 3;
-  else if (byte >= 0xF0 && byte <= 0xF4)
+    if (lead == 0xE0) second_low = 0xA0;
+    if (lead == 0xED) second_high = 0x9F;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
     length = 4;
-  if (pos + length > text.size()) return 1;
-  for (std::size_t i = 1; i < length; ++i) {
-    if ((static_cast<unsigned char>(text[pos + i]) & 0xC0) != 0x80) return 1;
+    if (lead == 0xF0) second_low = 0x90;
+    if (lead == 0xF4) second_high = 0x8F;
+  } else {
+    return 0;
+  }
+  if (pos + length > text.size()) return 0;
+  if (byte_at(1) < second_low || byte_at(1) > second_high) return 0;
+  for (std::size_t i = 2; i < length; ++i) {
+    if (byte_at(i) < 0x80 || byte_at(i) > 0xBF) return 0;
   }
   return length;
+}
+
+// The length of the UTF-8 sequence starting at text[pos], or 1 when it is not a valid one.
+std::size_t utf8_length(std::string_view text, std::size_t pos) {
+  return std::max<std::size_t>(1, well_formed_utf8(text, pos));
 }
 
 // A character quoted for a message: printable ASCII and valid UTF-8 as is, others as \xNN.
@@ -222,16 +246,32 @@ void Lexer::lex_escape(std::string& value) {
       code = code * 8 + static_cast<unsigned>(peek_char() - '0');
       advance_char();
     }
-    value += static_cast<char>(code);
+    // A character, as in Java, from which BIP2 takes its escapes: U+0000 to U+00FF.
+    append_utf8(value, code);
     return;
   }
   if (c == 'u' && is_hex(peek_char(1)) && is_hex(peek_char(2)) && is_hex(peek_char(3)) &&
       is_hex(peek_char(4))) {
-    std::uint32_t code = 0;
-    advance_char();
-    for (int i = 0; i < 4; ++i) {
-      code = code * 16 + static_cast<std::uint32_t>(hex_value(peek_char()));
-      advance_char();
+    const std::uint32_t code = lex_hex4();
+    if (code >= 0xD800 && code <= 0xDBFF && peek_char() == '\\' && peek_char(1) == 'u' &&
+        is_hex(peek_char(2)) && is_hex(peek_char(3)) && is_hex(peek_char(4)) &&
+        is_hex(peek_char(5))) {
+      const std::size_t mark = pos_;
+      const Location after = here();
+      advance_char();  // the backslash of the second half
+      const std::uint32_t low = lex_hex4();
+      if (low >= 0xDC00 && low <= 0xDFFF) {
+        append_utf8(value, 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00));
+        return;
+      }
+      pos_ = mark;  // not a low surrogate: lexed again as an escape of its own
+      line_ = after.line;
+      column_ = after.column;
+    }
+    if (code >= 0xD800 && code <= 0xDFFF) {
+      errors_.error(at, concat({"invalid escape sequence '\\", text_.substr(pos_ - 5, 5),
+                                "': half of a UTF-16 surrogate pair without its other half"}));
+      return;
     }
     append_utf8(value, code);
     return;
@@ -247,14 +287,31 @@ void Lexer::lex_escape(std::string& value) {
   for (std::size_t i = 0; i < length; ++i) advance_char();
 }
 
+std::uint32_t Lexer::lex_hex4() {
+  advance_char();  // the u
+  std::uint32_t code = 0;
+  for (int i = 0; i < 4; ++i) {
+    code = code * 16 + static_cast<std::uint32_t>(hex_value(peek_char()));
+    advance_char();
+  }
+  return code;
+}
+
 Token Lexer::lex_string(Token token) {
   std::size_t start = pos_;
   advance_char();  // the opening quote
   while (!at_end() && peek_char() != '"') {
     if (peek_char() == '\\') {
       lex_escape(token.string_value);
+    } else if (const std::size_t length = well_formed_utf8(text_, pos_); length != 0) {
+      for (std::size_t i = 0; i < length; ++i) {
+        token.string_value += peek_char();
+        advance_char();
+      }
     } else {
-      token.string_value += peek_char();
+      errors_.error(
+          here(), concat({"string literal holds the byte ", quote_character(text_.substr(pos_, 1)),
+                          ", which is not UTF-8 (sources are UTF-8 text)"}));
       advance_char();
     }
   }

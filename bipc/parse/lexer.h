@@ -161,6 +161,9 @@ class Lexer {
   Token lex_number(Token token);
   Token lex_string(Token token);
   void lex_escape(std::string& value);
+  /// The code unit of a `\uXXXX` escape whose backslash is lexed: past the `u` and its four
+  /// hexadecimal digits, which the caller has checked.
+  std::uint32_t lex_hex4();
   Token lex_symbol(Token token);
 
   std::string_view text_;

@@ -61,7 +61,10 @@ int run_ir(const FrontendOptions& options, const std::string& output, bool json_
   FrontendResult result = run_frontend(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
   const std::string json =
-      json_format ? ir::to_json(*result.system).dump(2) + "\n" : ir::to_text(*result.system);
+      json_format ? ir::to_json(*result.system)
+                            .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+                        "\n"
+                  : ir::to_text(*result.system);
   if (output.empty() || output == "-") {
     std::cout << json;
     return kOk;

@@ -10,6 +10,12 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+/// One line of the trace. A string datum need not be UTF-8 (an extern function may return any
+/// bytes): such bytes become U+FFFD rather than end the run.
+std::string dump_line(const Json& line) {
+  return line.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 Json value_json(const StateView& state, Val v, bipc::ir::ValueKind kind) {
   switch (kind) {
     case bipc::ir::ValueKind::Bool:
@@ -84,7 +90,7 @@ bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
   line["fired"] = fired_json(step, state, layout_);
   line["places"] = std::move(places);
   line["data"] = std::move(data);
-  out_ << line.dump() << '\n';
+  out_ << dump_line(line) << '\n';
   return true;
 }
 
@@ -95,7 +101,7 @@ void JsonlTrace::finish(RunEnd end, int code, const std::string& message) {
     line["code"] = code;
     line["message"] = message;
   }
-  out_ << line.dump() << '\n';
+  out_ << dump_line(line) << '\n';
 }
 
 }  // namespace smcbip::engines

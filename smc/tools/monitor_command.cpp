@@ -84,7 +84,8 @@ void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& 
   }
   nlohmann::ordered_json out;
   out["results"] = std::move(results);
-  std::cout << out.dump(2) << "\n";
+  // Bytes that are not UTF-8 (from the trace read) become U+FFFD rather than an error.
+  std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 /// Resolves the properties' names against the model of --model (errors into `parsed`); false

@@ -138,7 +138,8 @@ std::string json_text(const Report& report) {
   Json out;
   out["model"] = {{"file", report.model}, {"root", report.root}, {"hash", report.hash}};
   out["results"] = std::move(results);
-  return out.dump(2) + "\n";
+  // Bytes that are not UTF-8 (a file name may hold any) become U+FFFD rather than an error.
+  return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string csv_text(const Report& report) {

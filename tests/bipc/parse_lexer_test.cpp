@@ -3,6 +3,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bipc/parse/lexer.h"
@@ -118,6 +119,53 @@ TEST(ParseLexer, StringEscapes) {
             "\xC3\xA9"
             "A");
   EXPECT_EQ(tokens[0].text, R"("a\b\t\n\f\r\"\'\\z")");
+}
+
+// A string holds UTF-8 text: octal escapes are characters U+0000 to U+00FF (as in Java, whose
+// escapes BIP2 takes), and a UTF-16 surrogate pair of \u escapes is one character.
+TEST(ParseLexer, StringsAreUtf8) {
+  Diagnostics diags;
+  std::vector<Token> tokens = lex(R"("\351\377" "\uD83D\uDE00" )"
+                                  "\"\xC3\xA9\xF0\x9F\x98\x80\xEF\xBF\xBF\"",
+                                  diags);
+  EXPECT_FALSE(diags.has_errors()) << first_error(diags);
+  ASSERT_EQ(tokens.size(), 4u);
+  EXPECT_EQ(tokens[0].string_value, "\xC3\xA9\xC3\xBF");
+  EXPECT_EQ(tokens[1].string_value, "\xF0\x9F\x98\x80");
+  EXPECT_EQ(tokens[2].string_value, "\xC3\xA9\xF0\x9F\x98\x80\xEF\xBF\xBF");
+}
+
+TEST(ParseLexer, BytesThatAreNotUtf8InAStringAreErrors) {
+  // A Latin-1 byte, an overlong '/', an encoded surrogate, a code point past U+10FFFF and a
+  // sequence cut short by the closing quote, each reported at its byte.
+  for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"x = \"caf\xE9\"", "1:9: string literal holds the byte '\\xE9', which is not UTF-8"},
+           {"\"\xC0\xAF\"", "1:2: string literal holds the byte '\\xC0', which is not UTF-8"},
+           {"\"a\xED\xA0\x80\"", "1:3: string literal holds the byte '\\xED', which is not UTF-8"},
+           {"\"\xF4\x90\x80\x80\"",
+            "1:2: string literal holds the byte '\\xF4', which is not UTF-8"},
+           {"\"\xE2\x82\"", "1:2: string literal holds the byte '\\xE2', which is not UTF-8"},
+       }) {
+    Diagnostics diags;
+    lex(text, diags);
+    EXPECT_EQ(first_error(diags).substr(0, expected.size()), expected) << first_error(diags);
+  }
+}
+
+TEST(ParseLexer, HalfASurrogatePairIsAnError) {
+  for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+           {R"("\uD800")",
+            "1:2: invalid escape sequence '\\uD800': half of a UTF-16 surrogate pair"},
+           {R"("\uDC00\uD800")", "1:2: invalid escape sequence '\\uDC00': half of a UTF-16"},
+           {R"("\uD800\u0041")", "1:2: invalid escape sequence '\\uD800': half of a UTF-16"},
+       }) {
+    Diagnostics diags;
+    std::vector<Token> tokens = lex(text, diags);
+    EXPECT_EQ(first_error(diags).substr(0, expected.size()), expected) << first_error(diags);
+  }
+  Diagnostics diags;
+  std::vector<Token> tokens = lex(R"("\uD800\u0041")", diags);
+  EXPECT_EQ(tokens[0].string_value, "A");  // the escape after the lone half is kept
 }
 
 TEST(ParseLexer, InvalidEscape) {
