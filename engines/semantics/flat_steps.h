@@ -198,7 +198,7 @@ class FlatSteps final : public CompiledSteps {
         info.fired = StepInfo::Fired::Internal;
         info.atom = internal.atom;
         info.port = internal.port;
-        if (!fire_port(internal.atom, internal.port)) return Outcome::Beyond;
+        if (!fire_port(internal.atom, internal.offer)) return Outcome::Beyond;
       }
       if (gathers_touched()) {
         recompute_touched();
@@ -284,11 +284,13 @@ class FlatSteps final : public CompiledSteps {
            bipc::ir::kNone;
   }
 
-  /// Runtime::fire_port: the offered transition, the internal transitions it enables, the new
-  /// offers; false where the Runtime reports an error.
-  bool fire_port(Index a, Index port) {
+  /// Runtime::fire_port for atom `a`'s port whose offer is offers_[offer_index]: the offered
+  /// transition, the internal transitions it enables, the new offers; false where the Runtime
+  /// reports an error. The tables keep the offer's index with the port, so that its load need
+  /// not wait for the atom's entry.
+  bool fire_port(Index a, std::uint32_t offer_index) {
     const FlatTables::Atom& atom = t_.atoms[a];
-    const std::optional<AtomPortValue>& offer = offers_[atom.first_offer + port];
+    const std::optional<AtomPortValue>& offer = offers_[offer_index];
     if (!offer) return true;
     if (gathers_touched() && touched_[a] != stamp_) {
       touched_[a] = stamp_;
@@ -319,7 +321,7 @@ class FlatSteps final : public CompiledSteps {
     std::copy_n(value_data_.begin() + c.value_data, c.data_size, state_->data.begin() + c.data);
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
       if (c.triggered && chosen_[i] == Flag::Off) continue;
-      if (!fire_port(t_.ports[i].atom, t_.ports[i].port)) return false;
+      if (!fire_port(t_.ports[i].atom, t_.ports[i].offer)) return false;
     }
     return true;
   }
