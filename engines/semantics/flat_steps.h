@@ -198,7 +198,7 @@ class FlatSteps final : public CompiledSteps {
         info.fired = StepInfo::Fired::Internal;
         info.atom = internal.atom;
         info.port = internal.port;
-        if (!fire_port(internal.atom, internal.offer)) return Outcome::Beyond;
+        if (!fire_port(internal)) return Outcome::Beyond;
       }
       if (gathers_touched()) {
         recompute_touched();
@@ -250,10 +250,11 @@ class FlatSteps final : public CompiledSteps {
     return &c.steps->state_->data[t.param_slots[bound.first_param + arg]];
   }
 
-  Frame atom_frame(Index a) {
-    const FlatTables::Atom& atom = t_.atoms[a];
+  Frame atom_frame(Index a) { return atom_frame(t_.atoms[a], t_.atoms[a].data); }
+  /// The frame of `atom`, whose data start at `data` (from the entry of a port it fires).
+  Frame atom_frame(const FlatTables::Atom& atom, std::uint32_t data) {
     Frame f;
-    f.atom_data = state_->data.data() + atom.data;
+    f.atom_data = state_->data.data() + data;
     f.atom_params = layout_.params.data() + atom.params;
     f.clocks = atom.has_clocks ? state_->clocks.data() + atom.clocks : nullptr;
     f.clock_units = layout_.clock_units.data() + atom.clocks;
@@ -278,26 +279,28 @@ class FlatSteps final : public CompiledSteps {
   /// choice.
   bool update_atom(Index a, const Frame& f) {
     const FlatTables::Atom& atom = t_.atoms[a];
+    return update_atom(atom, f, state_->marking.data() + atom.places);
+  }
+  bool update_atom(const FlatTables::Atom& atom, const Frame& f, const std::uint8_t* marking) {
     std::optional<AtomPortValue>* offers = offers_.data() + atom.first_offer;
     for (std::uint32_t p = 0; p < atom.port_count; ++p) offers[p].reset();
-    return code_.atom_offers(atom.type, state_->marking.data() + atom.places, f, offers) ==
-           bipc::ir::kNone;
+    return code_.atom_offers(atom.type, marking, f, offers) == bipc::ir::kNone;
   }
 
-  /// Runtime::fire_port for atom `a`'s port whose offer is offers_[offer_index]: the offered
-  /// transition, the internal transitions it enables, the new offers; false where the Runtime
-  /// reports an error. The tables keep the offer's index with the port, so that its load need
-  /// not wait for the atom's entry.
-  bool fire_port(Index a, std::uint32_t offer_index) {
-    const FlatTables::Atom& atom = t_.atoms[a];
-    const std::optional<AtomPortValue>& offer = offers_[offer_index];
+  /// Runtime::fire_port: the offered transition, the internal transitions it enables, the new
+  /// offers; false where the Runtime reports an error. The offer, marking and data are found
+  /// through the port's entry, so that their loads need not wait for the atom's.
+  bool fire_port(const FlatTables::AtomPort& bound) {
+    const Index a = bound.atom;
+    const std::optional<AtomPortValue>& offer = offers_[bound.offer];
     if (!offer) return true;
+    const FlatTables::Atom& atom = t_.atoms[a];
     if (gathers_touched() && touched_[a] != stamp_) {
       touched_[a] = stamp_;
       touched_list_.push_back(a);
     }
-    const Frame f = atom_frame(a);
-    std::uint8_t* marking = state_->marking.data() + atom.places;
+    const Frame f = atom_frame(atom, bound.data);
+    std::uint8_t* marking = state_->marking.data() + bound.places;
     if (!code_.atom_fire(atom.type, offer->transition, marking, f)) return false;
     if (atom.has_internal_transitions) {
       for (;;) {
@@ -308,7 +311,7 @@ class FlatSteps final : public CompiledSteps {
         }
       }
     }
-    return update_atom(a, f);
+    return update_atom(atom, f, marking);
   }
 
   /// Runtime::execute_value for a rendezvous: `down` over the value, its data written back, then
@@ -321,7 +324,7 @@ class FlatSteps final : public CompiledSteps {
     std::copy_n(value_data_.begin() + c.value_data, c.data_size, state_->data.begin() + c.data);
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
       if (c.triggered && chosen_[i] == Flag::Off) continue;
-      if (!fire_port(t_.ports[i].atom, t_.ports[i].offer)) return false;
+      if (!fire_port(t_.ports[i])) return false;
     }
     return true;
   }

@@ -78,9 +78,13 @@ bool covers_system(const System& system, const Layout& layout, const ModelCode& 
   return true;
 }
 
+FlatTables::AtomPort atom_port(const FlatTables& tables, Index a, Index port) {
+  const FlatTables::Atom& atom = tables.atoms[a];
+  return {a, port, atom.first_offer + port, atom.data, atom.places};
+}
+
 FlatTables::Connector connector_entry(const System& system, const Layout& layout, Index k,
-                                      FlatTables& tables,
-                                      const std::vector<std::uint32_t>& first_offer) {
+                                      FlatTables& tables) {
   const ConnectorInstance& connector = system.connectors[k];
   const auto& type = system.connector_types[connector.type];
   FlatTables::Connector entry;
@@ -93,7 +97,7 @@ FlatTables::Connector connector_entry(const System& system, const Layout& layout
   for (const auto& refs : connector.bound) {
     const PortRef& ref = refs.front();
     const bipc::ir::Port& port = system.atom_types[system.atoms[ref.instance].type].ports[ref.port];
-    tables.ports.push_back({ref.instance, ref.port, first_offer[ref.instance] + ref.port,
+    tables.ports.push_back({atom_port(tables, ref.instance, ref.port),
                             static_cast<std::uint32_t>(tables.param_slots.size())});
     for (Index slot : port.data) {
       tables.param_slots.push_back(
@@ -203,7 +207,6 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
                                       const ModelCode& code) {
   if (!covers_system(system, layout, code)) return std::nullopt;
   FlatTables tables;
-  std::vector<std::uint32_t> first_offer;
   for (Index a = 0; a < system.atoms.size(); ++a) {
     const Index t = system.atoms[a].type;
     FlatTables::Atom atom;
@@ -216,15 +219,14 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     atom.port_count = static_cast<std::uint32_t>(system.atom_types[t].ports.size());
     atom.has_internal_transitions = !layout.internal_transitions[t].empty();
     atom.has_clocks = !system.atom_types[t].clocks.empty();
-    first_offer.push_back(tables.offer_count);
     tables.offer_count += atom.port_count;
     tables.atoms.push_back(atom);
   }
   for (Index k : layout.listed_connectors) {
-    tables.connectors.push_back(connector_entry(system, layout, k, tables, first_offer));
+    tables.connectors.push_back(connector_entry(system, layout, k, tables));
   }
   for (const auto& [atom, port] : layout.internal_ports) {
-    tables.internal.push_back({atom, port, first_offer[atom] + port});
+    tables.internal.push_back(atom_port(tables, atom, port));
   }
   index_neighbours(tables);
   index_affected(tables);

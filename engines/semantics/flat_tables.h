@@ -23,10 +23,15 @@ struct FlatTables {
     bool has_internal_transitions = false;
     bool has_clocks = false;
   };
-  /// A port parameter of a connector and the atom port it binds.
-  struct Port {
+  /// An atom port a step may fire, with the atom's slots its firing reads first: copied from
+  /// the atom's entry, so that their loads need not wait for it.
+  struct AtomPort {
     Index atom = 0, port = 0;
-    std::uint32_t offer = 0;        // into the offers
+    std::uint32_t offer = 0;             // into the offers
+    std::uint32_t data = 0, places = 0;  // Atom::data and Atom::places
+  };
+  /// A port parameter of a connector and the atom port it binds.
+  struct Port : AtomPort {
     std::uint32_t first_param = 0;  // into `param_slots`
     bool trigger = false;
   };
@@ -44,11 +49,8 @@ struct FlatTables {
     bool triggered = false;
     bool enumerated = false;  // Layout::enumerated
   };
-  /// An internal port item: its atom and port, and its offer.
-  struct Internal {
-    Index atom = 0, port = 0;
-    std::uint32_t offer = 0;
-  };
+  /// An internal port item.
+  using Internal = AtomPort;
   std::vector<Atom> atoms;
   /// Item positions: the listed connectors in listing order, then the internal ports.
   std::vector<Connector> connectors;
