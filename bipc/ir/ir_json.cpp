@@ -4,6 +4,8 @@
 #include <charconv>
 #include <string>
 
+#include "bipc/json_dump.h"
+
 namespace smcbip::bipc::ir {
 
 using nlohmann::json;
@@ -161,10 +163,7 @@ std::string instruction_text(const Instr& in, const System& system) {
       return text + ".float " + number_text(in.imm.f);
     case Op::PushString:
       return text + ".string " +
-             (in.index < system.strings.size()
-                  ? json(system.strings[in.index])
-                        .dump(-1, ' ', false, json::error_handler_t::replace)
-                  : "?");
+             (in.index < system.strings.size() ? dump_json(json(system.strings[in.index])) : "?");
     case Op::Load:
     case Op::Store:
       return text + " " + slot_text(in, system);

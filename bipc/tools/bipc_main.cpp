@@ -17,6 +17,7 @@
 #include "bipc/ir/ir_json.h"
 #include "bipc/ir/ir_text.h"
 #include "bipc/ir/model_hash.h"
+#include "bipc/json_dump.h"
 #include "bipc/options.h"
 #include "bipc/output_file.h"
 
@@ -61,10 +62,7 @@ int run_ir(const FrontendOptions& options, const std::string& output, bool json_
   FrontendResult result = run_frontend(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
   const std::string json =
-      json_format ? ir::to_json(*result.system)
-                            .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-                        "\n"
-                  : ir::to_text(*result.system);
+      json_format ? dump_json(ir::to_json(*result.system), 2) + "\n" : ir::to_text(*result.system);
   if (output.empty() || output == "-") {
     std::cout << json;
     return kOk;

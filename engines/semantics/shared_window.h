@@ -43,11 +43,11 @@ class SharedWindowChooser {
 
   /// floor(-mean ln u) for the last mean, u in (0, 1).
   TimeValue delay(double u) const {
-    if (u > at_most_[0]) return 0;
+    if (u > at_most_[0][0]) return 0;
     // k: the cuts at or above u, counted two at a time without branches (as random as u).
     const Pair both = {u, u};
     Count at_or_above = {0, 0};
-    for (const Pair& cuts : at_most_pairs_) at_or_above -= (both <= cuts);  // true is -1
+    for (const Pair& cuts : at_most_) at_or_above -= (both <= cuts);  // true is -1
     const auto k = static_cast<int>(at_or_above[0] + at_or_above[1]);
     if (k < kCuts && u < at_least_[k]) return k;
     // The conversion truncates, which is floor on the delay, positive as u < 1 (and a call to
@@ -66,16 +66,15 @@ class SharedWindowChooser {
   void set_mean(double mean) {
     mean_ = mean;
     for (int k = 0; k < kCuts; ++k) {
-      at_most_[k] = std::exp(-(k + 1 - kMargin) / mean);  // u above it: the delay is at most k
-      at_least_[k] = std::exp(-(k + kMargin) / mean);     // u below it: the delay is at least k
-      at_most_pairs_[k / 2][k % 2] = at_most_[k];
+      // u above cut k: the delay is at most k; u below at_least_[k]: it is at least k.
+      at_most_[k / 2][k % 2] = std::exp(-(k + 1 - kMargin) / mean);
+      at_least_[k] = std::exp(-(k + kMargin) / mean);
     }
   }
 
   double mean_ = 0;
-  double at_most_[kCuts] = {1};
+  Pair at_most_[kCuts / 2] = {};  // cut k in lane k % 2 of pair k / 2
   double at_least_[kCuts] = {};
-  Pair at_most_pairs_[kCuts / 2] = {};
 };
 
 }  // namespace smcbip::engines

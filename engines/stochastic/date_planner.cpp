@@ -68,16 +68,28 @@ std::optional<DatePlanner::Fixed> DatePlanner::fixed_distribution(
     if (!number) return std::nullopt;
     params.push_back(*number);
   }
+  // Invalid parameters are left to each draw, which reports them.
+  auto made = make_distribution(annotation, params);
+  if (auto* distribution = std::get_if<DateDistribution>(&made)) return Fixed{*distribution};
+  return std::nullopt;
+}
+
+std::variant<DateDistribution, std::string> DatePlanner::make_distribution(
+    const bipc::ir::Stochastic& annotation, std::span<const double> params) const {
   const EmpiricalCdf* custom = nullptr;
   if (annotation.distribution == bipc::ir::Distribution::Custom) {
     const auto found = custom_.find(annotation.custom_file);
-    if (found == custom_.end()) return std::nullopt;
-    custom = &found->second;
+    if (found != custom_.end()) custom = &found->second;
   }
-  // Invalid parameters are left to each draw, which reports them.
-  auto made = DateDistribution::make(annotation.distribution, params, custom);
-  if (auto* distribution = std::get_if<DateDistribution>(&made)) return Fixed{*distribution};
-  return std::nullopt;
+  return DateDistribution::make(annotation.distribution, params, custom);
+}
+
+double DatePlanner::Fixed::mass_below(double x) {
+  if (x != lower) {
+    lower = x;
+    below = distribution.cdf(x);
+  }
+  return below;
 }
 
 std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, Index>> key) const {
@@ -218,11 +230,7 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   std::optional<Fixed>& fixed = fixed_distributions_[first_port_[atom] + port];
   if (!fixed) {
     runtime.stochastic_params(atom, port, params_);
-    const EmpiricalCdf* custom = nullptr;
-    if (annotation.distribution == bipc::ir::Distribution::Custom) {
-      custom = &custom_.at(annotation.custom_file);
-    }
-    auto made = DateDistribution::make(annotation.distribution, params_, custom);
+    auto made = make_distribution(annotation, params_);
     if (auto* message = std::get_if<std::string>(&made)) {
       error = "@stochastic distribution of " + where() + ": " + *message;
       return false;
@@ -233,16 +241,7 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  double below = 0.0;
-  if (fixed && fixed->lower == lower) {
-    below = fixed->below;
-  } else {
-    below = distribution.cdf(lower);
-    if (fixed) {
-      fixed->lower = lower;
-      fixed->below = below;
-    }
-  }
+  const double below = fixed ? fixed->mass_below(lower) : distribution.cdf(lower);
   double sample = 0.0;
   if (below > 0.0) {
     const std::optional<double> above = distribution.sample_above(lower, below, random_);

@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 #include "bipc/ir/ir.h"
@@ -101,6 +102,8 @@ class DatePlanner {
     DateDistribution distribution;
     double lower = std::numeric_limits<double>::quiet_NaN();  // equal to nothing at first
     double below = 0.0;
+    /// distribution.cdf(x), computed again only for a new x.
+    double mass_below(double x);
   };
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.
@@ -130,6 +133,10 @@ class DatePlanner {
                        TimeValue& date, std::string& error);
   /// The distribution of an annotation whose parameters are all numbers, when they are valid.
   std::optional<Fixed> fixed_distribution(const bipc::ir::Stochastic& annotation) const;
+  /// The annotation's distribution with `params` (its custom CDF from those loaded), or why
+  /// there is none.
+  std::variant<DateDistribution, std::string> make_distribution(
+      const bipc::ir::Stochastic& annotation, std::span<const double> params) const;
   /// The @stochastic atom port among those bound to `ports` of connector `k` (whose ports each
   /// bind one atom port), if any.
   std::optional<std::pair<Index, Index>> stochastic_port_of(Index k, PortSet ports) const;

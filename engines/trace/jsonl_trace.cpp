@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bipc/json_dump.h"
 #include "engines/semantics/layout.h"
 
 namespace smcbip::engines {
@@ -9,12 +10,6 @@ namespace smcbip::engines {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-/// One line of the trace. A string datum need not be UTF-8 (an extern function may return any
-/// bytes): such bytes become U+FFFD rather than end the run.
-std::string dump_line(const Json& line) {
-  return line.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
 
 Json value_json(const StateView& state, Val v, bipc::ir::ValueKind kind) {
   switch (kind) {
@@ -90,7 +85,7 @@ bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
   line["fired"] = fired_json(step, state, layout_);
   line["places"] = std::move(places);
   line["data"] = std::move(data);
-  out_ << dump_line(line) << '\n';
+  out_ << bipc::dump_json(line) << '\n';
   return true;
 }
 
@@ -101,7 +96,7 @@ void JsonlTrace::finish(RunEnd end, int code, const std::string& message) {
     line["code"] = code;
     line["message"] = message;
   }
-  out_ << dump_line(line) << '\n';
+  out_ << bipc::dump_json(line) << '\n';
 }
 
 }  // namespace smcbip::engines

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bipc/json_dump.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/report.h"
@@ -84,8 +85,7 @@ void print_json(const monitors::PropertyFile& file, const std::vector<Checked>& 
   }
   nlohmann::ordered_json out;
   out["results"] = std::move(results);
-  // Bytes that are not UTF-8 (from the trace read) become U+FFFD rather than an error.
-  std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  std::cout << bipc::dump_json(out, 2) << "\n";
 }
 
 /// Resolves the properties' names against the model of --model (errors into `parsed`); false

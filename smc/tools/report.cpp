@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "bipc/json_dump.h"
 #include "smc/stats/sampling_plans.h"
 
 namespace smcbip::tools {
@@ -138,8 +139,7 @@ std::string json_text(const Report& report) {
   Json out;
   out["model"] = {{"file", report.model}, {"root", report.root}, {"hash", report.hash}};
   out["results"] = std::move(results);
-  // Bytes that are not UTF-8 (a file name may hold any) become U+FFFD rather than an error.
-  return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return bipc::dump_json(out, 2) + "\n";
 }
 
 std::string csv_text(const Report& report) {
