@@ -53,26 +53,23 @@ class RandomStream {
     }
   }
 
-  /// A uniform integer in [0, n), without modulo bias (rejection of the incomplete last block,
-  /// as OpenBSD's arc4random_uniform): x mod n of the first draw x not in that block
-  /// [0, 2^64 mod n). n must be positive; n == 0 aborts. Inline, and without division where it
-  /// can: the block lies below n, so only a draw below n (rare unless n is huge) needs its end;
-  /// and from the fourth draw in a row below the same n, x mod n uses n's reciprocal, two
-  /// multiplications where a 64-bit division is a good part of a scheduler's step. Computing
-  /// the reciprocal costs a 128-bit division, which bounds that change from draw to draw (the
-  /// planner's uniform dates) should not pay each time.
+  /// A uniform integer in [0, n), without bias, by multiplication (D. Lemire, "Fast random
+  /// integer generation in an interval", ACM TOMACS 29(1), 2019): the high word of x·n for the
+  /// first draw x whose low word is not in the block [0, 2^64 mod n), so that each result
+  /// comes of floor(2^64 / n) draws. The block lies below n, so its end (a division) is computed
+  /// only for a low word below n, rare unless n is huge: a step's uniform choices and dates
+  /// cost a multiplication, not a 64-bit division. n must be positive; n == 0 aborts.
   std::uint64_t below(std::uint64_t n) {
-    if (n != below_n_) [[unlikely]] {
-      set_below(n);
-    } else if (below_magic_ == 0 && ++below_repeats_ == kRepeatsBeforeReciprocal) [[unlikely]] {
-      set_reciprocal(n);
-    }
+    if (n == 0) [[unlikely]]
+      below_zero();
+    __extension__ using Wide = unsigned __int128;
     while (true) {
-      const std::uint64_t x = next_u64();
-      if (x < n && x < (0 - n) % n) [[unlikely]] {
+      const Wide product = Wide{next_u64()} * n;
+      const auto low = static_cast<std::uint64_t>(product);
+      if (low < n && low < (0 - n) % n) [[unlikely]] {
         continue;
       }
-      return below_magic_ == 0 ? x % n : x - below_quotient(x) * n;
+      return static_cast<std::uint64_t>(product >> 64);
     }
   }
 
@@ -91,24 +88,7 @@ class RandomStream {
   std::uint64_t key0_;
   std::uint64_t key1_;
   std::uint64_t counter_ = 0;
-  // below(): the last n. Draws in the incomplete block [0, 2^64 mod n) are redrawn, the rest
-  // cover each residue floor(2^64 / n) times.
-  std::uint64_t below_n_ = 0;
-  // floor(x / below_n_) by multiplication (Granlund and Montgomery, "Division by invariant
-  // integers using multiplication", PLDI 1994, figure 4.1): exact for every 64-bit x. The
-  // magic number is at least 1; 0 means not computed yet.
-  std::uint64_t below_magic_ = 0;
-  unsigned below_shift1_ = 0, below_shift2_ = 0;
-  unsigned below_repeats_ = 0;  // draws below the same n without its reciprocal
-  static constexpr unsigned kRepeatsBeforeReciprocal = 4;
-  std::uint64_t below_quotient(std::uint64_t x) const {
-    __extension__ using Wide = unsigned __int128;
-    const auto high = static_cast<std::uint64_t>((Wide{below_magic_} * x) >> 64);
-    return (high + ((x - high) >> below_shift1_)) >> below_shift2_;
-  }
-  /// Keeps n for below(); aborts on n == 0.
-  void set_below(std::uint64_t n);
-  void set_reciprocal(std::uint64_t n);
+  [[noreturn]] static void below_zero();
 };
 
 }  // namespace smcbip::engines

@@ -193,10 +193,20 @@ TEST(RandomStream, BelowIsInRangeAndUnbiased) {
   for (int i = 0; i < 100; ++i) ASSERT_LT(r.below(big), big);
 }
 
-TEST(RandomStream, BelowIsTheFirstAcceptedDrawModuloN) {
-  // below() divides by a reciprocal: it must equal x % n for the draw x it keeps, for bounds of
-  // every magnitude (1, powers of two and their neighbours, 2^64 - 1) and bounds changing
-  // between draws.
+/// Lemire's rule, written out: the high word of x·n for the first draw x whose low word is not
+/// below 2^64 mod n.
+std::uint64_t lemire_below(RandomStream& raw, std::uint64_t n) {
+  __extension__ using Wide = unsigned __int128;
+  const std::uint64_t threshold = (0 - n) % n;
+  Wide product = Wide{raw.next_u64()} * n;
+  while (static_cast<std::uint64_t>(product) < threshold) product = Wide{raw.next_u64()} * n;
+  return static_cast<std::uint64_t>(product >> 64);
+}
+
+TEST(RandomStream, BelowIsTheHighWordOfTheFirstAcceptedProduct) {
+  // below() skips the division unless the low word is below n: it must give Lemire's result
+  // for bounds of every magnitude (1, powers of two and their neighbours, 2^64 - 1, where
+  // rejection is frequent), and for bounds changing between draws.
   std::vector<std::uint64_t> bounds = {1, 2, 3, 5, 6, 7, 10, 500, 1000, 0xFFFFFFFFFFFFFFFFu};
   for (unsigned k = 1; k < 64; ++k) {
     const std::uint64_t power = std::uint64_t{1} << k;
@@ -207,19 +217,14 @@ TEST(RandomStream, BelowIsTheFirstAcceptedDrawModuloN) {
   for (const std::uint64_t n : bounds) {
     RandomStream drawn(22, n), raw(22, n);
     for (int i = 0; i < 50; ++i) {
-      const std::uint64_t threshold = (0 - n) % n;
-      std::uint64_t x = raw.next_u64();
-      while (x < threshold) x = raw.next_u64();
-      ASSERT_EQ(drawn.below(n), x % n) << "n = " << n << ", draw " << i;
+      ASSERT_EQ(drawn.below(n), lemire_below(raw, n)) << "n = " << n << ", draw " << i;
     }
+    EXPECT_EQ(drawn.draws(), raw.draws()) << "n = " << n;
   }
   RandomStream alternating(23, 0), raw(23, 0);
   for (std::uint64_t i = 1; i < 2000; ++i) {
     const std::uint64_t n = i % 2 == 0 ? i : (std::uint64_t{1} << 63) + i;
-    const std::uint64_t threshold = (0 - n) % n;
-    std::uint64_t x = raw.next_u64();
-    while (x < threshold) x = raw.next_u64();
-    ASSERT_EQ(alternating.below(n), x % n) << "n = " << n;
+    ASSERT_EQ(alternating.below(n), lemire_below(raw, n)) << "n = " << n;
   }
 }
 
