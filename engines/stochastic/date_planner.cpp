@@ -70,7 +70,8 @@ std::optional<DatePlanner::Fixed> DatePlanner::fixed_distribution(
   }
   // Invalid parameters are left to each draw, which reports them.
   auto made = make_distribution(annotation, params);
-  if (auto* distribution = std::get_if<DateDistribution>(&made)) return Fixed{*distribution};
+  if (auto* distribution = std::get_if<DateDistribution>(&made))
+    return Fixed{*distribution, std::numeric_limits<double>::quiet_NaN(), {}};
   return std::nullopt;
 }
 
@@ -84,12 +85,12 @@ std::variant<DateDistribution, std::string> DatePlanner::make_distribution(
   return DateDistribution::make(annotation.distribution, params, custom);
 }
 
-double DatePlanner::Fixed::mass_below(double x) {
+DateDistribution::Masses DatePlanner::Fixed::masses(double x) {
   if (x != lower) {
     lower = x;
-    below = distribution.cdf(x);
+    at_lower = distribution.masses(x);
   }
-  return below;
+  return at_lower;
 }
 
 std::size_t DatePlanner::KeyHash::operator()(std::span<const std::pair<Index, Index>> key) const {
@@ -241,10 +242,11 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  const double below = fixed ? fixed->mass_below(lower) : distribution.cdf(lower);
+  const DateDistribution::Masses at_lower =
+      fixed ? fixed->masses(lower) : distribution.masses(lower);
   double sample = 0.0;
-  if (below > 0.0) {
-    const std::optional<double> above = distribution.sample_above(lower, below, random_);
+  if (at_lower.below > 0.0) {
+    const std::optional<double> above = distribution.sample_above(lower, at_lower, random_);
     if (!above) {
       error = "missed support: " + where() + " draws from " + distribution.describe() +
               " but its clock " + type.clocks[annotation.clock].name + " is already at " +

@@ -96,14 +96,14 @@ class DatePlanner {
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
 
  private:
-  // A distribution made once, and its last truncation point with the mass below it: a clock
-  // reset when its port is offered truncates at 0 every time.
+  // A distribution made once, and its last truncation point with the masses either side: a
+  // clock reset when its port is offered truncates at 0 every time.
   struct Fixed {
     DateDistribution distribution;
     double lower = std::numeric_limits<double>::quiet_NaN();  // equal to nothing at first
-    double below = 0.0;
-    /// distribution.cdf(x), computed again only for a new x.
-    double mass_below(double x);
+    DateDistribution::Masses at_lower;
+    /// distribution.masses(x), computed again only for a new x.
+    DateDistribution::Masses masses(double x);
   };
   /// An interaction item's identity: (connector, defined interaction), then the (atom, port)
   /// pairs it fires.

@@ -333,9 +333,14 @@ double DateDistribution::sample(RandomStream& random) const {
   return quantile_of(u, 1.0 - u);
 }
 
-std::optional<double> DateDistribution::sample_above(double lower, double below,
+DateDistribution::Masses DateDistribution::masses(double x) const {
+  const double below = cdf(x);
+  return {below, below <= 0.5 ? 1.0 - below : survival(x)};
+}
+
+std::optional<double> DateDistribution::sample_above(double lower, Masses at_lower,
                                                      RandomStream& random) const {
-  const double above = survival(lower);
+  const auto [below, above] = at_lower;
   if (!(above >= kMinTailMass)) return std::nullopt;
   const double u = random.uniform01_open();
   // The conditional law of X given X > lower has cumulative mass F(lower) + u·P(X > lower) at

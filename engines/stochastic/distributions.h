@@ -100,6 +100,16 @@ class DateDistribution {
   /// would cancel.
   double survival(double x) const;
 
+  /// The masses on either side of a point.
+  struct Masses {
+    double below = 0.0;  // P(X <= x)
+    double above = 1.0;  // P(X > x)
+  };
+  /// P(X <= x) and P(X > x) as cdf() and survival() give them, but for the cost of one where
+  /// the CDF is at most 1/2: then 1 - cdf(x) is at least 1/2 and within an ulp of survival(x),
+  /// its relative error as small as the survival function's own.
+  Masses masses(double x) const;
+
   /// The smallest x with cdf(x) >= p, for p in (0, 1) (the lower end of the support for p <= 0,
   /// the upper end for p >= 1, possibly infinite). Uses GSL's Pinv for p < 1/2 and Qinv of
   /// 1 - p otherwise. GSL's iterative gamma/chi2 inverses fail or are inaccurate in places
@@ -116,10 +126,10 @@ class DateDistribution {
   /// accurate. Always > lower. nullopt when P(X > lower) < kMinTailMass: the date cannot lie
   /// beyond `lower` (a missed support, which the caller reports as a model error).
   std::optional<double> sample_above(double lower, RandomStream& random) const {
-    return sample_above(lower, cdf(lower), random);
+    return sample_above(lower, masses(lower), random);
   }
-  /// As above, for a caller that already knows `mass_below` = cdf(lower).
-  std::optional<double> sample_above(double lower, double mass_below, RandomStream& random) const;
+  /// As above, for a caller that already knows masses(lower).
+  std::optional<double> sample_above(double lower, Masses at_lower, RandomStream& random) const;
 
   /// The distribution as written in a model, e.g. "normal(10, 2)"; for error messages.
   std::string describe() const;

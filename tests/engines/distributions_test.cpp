@@ -487,6 +487,25 @@ TEST(DateDistribution, QuantileInvertsTheCdf) {
   EXPECT_EQ(make(Distribution::Exponential, {1.0}).quantile(1.0), INFINITY);
 }
 
+TEST(DateDistribution, MassesAreTheCdfAndTheSurvivalFunction) {
+  // The CDF as it is; the survival function as 1 - cdf(x) where the CDF is at most 1/2, so
+  // within a few ulps of GSL's Q (relative 1e-14 allows both functions' own errors).
+  for (const FitCase& c : fit_cases()) {
+    SCOPED_TRACE(c.name);
+    const DateDistribution d = make(c.kind, c.params);
+    for (double p : {1e-300, 1e-12, 0.01, 0.3, 0.5, 0.9, 1.0 - 1e-9, 1.0 - 1e-15}) {
+      const double x = d.quantile(p);
+      const DateDistribution::Masses m = d.masses(x);
+      EXPECT_EQ(m.below, d.cdf(x)) << "p = " << p;
+      EXPECT_NEAR(m.above / d.survival(x), 1.0, 1e-14) << "p = " << p;
+    }
+    const DateDistribution::Masses far = d.masses(d.quantile(1.0 - std::ldexp(1.0, -50)));
+    if (c.kind != Distribution::Uniform) {
+      EXPECT_GT(far.above, 0.0) << "the tail is not 1 - 1";
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // EmpiricalCdf
 
