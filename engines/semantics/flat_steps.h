@@ -44,7 +44,12 @@ template <class Code>
 class FlatSteps final : public CompiledSteps {
  public:
   FlatSteps(Code& code, const bipc::ir::System& system, const Layout& layout, FlatTables tables)
-      : code_(code), system_(system), layout_(layout), t_(std::move(tables)) {
+      : code_(code),
+        system_(system),
+        layout_(layout),
+        t_(std::move(tables)),
+        connector_count_(static_cast<std::uint32_t>(t_.connectors.size())),
+        position_count_(static_cast<std::uint32_t>(t_.positions())) {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
     touched_.assign(t_.atoms.size(), 0);
@@ -74,7 +79,7 @@ class FlatSteps final : public CompiledSteps {
       for (Index a = 0; a < t_.atoms.size(); ++a) {
         if (!update_atom(a, atom_frame(a))) return false;
       }
-      for (std::uint32_t p = 0; p < t_.positions(); ++p) recompute(p);
+      for (std::uint32_t p = 0; p < position_count_; ++p) recompute(p);
     } catch (const CodeFault&) {
       return false;
     }
@@ -107,7 +112,7 @@ class FlatSteps final : public CompiledSteps {
   /// Runtime::compute_items lists them), then the Scheduler's choice among them.
   Outcome timed_step(bool at_limit, StepInfo& info) {
     const TimeValue now = state_->now;
-    const auto positions = static_cast<std::uint32_t>(t_.positions());
+    const std::uint32_t positions = position_count_;
     Interval waiting = Interval::from(now);
     for (std::uint32_t p = 0; p < positions; ++p) {
       if (enabled_[p] == Flag::On && raw_[p].urgency != bipc::Urgency::Lazy) {
@@ -189,12 +194,12 @@ class FlatSteps final : public CompiledSteps {
       touched_list_.clear();
     }
     try {
-      if (p < t_.connectors.size()) {
+      if (p < connector_count_) {
         info.fired = StepInfo::Fired::Interaction;
         info.connector = t_.connectors[p].index;
         if (!fire_connector(t_.connectors[p])) return Outcome::Beyond;
       } else {
-        const FlatTables::Internal& internal = t_.internal[p - t_.connectors.size()];
+        const FlatTables::Internal& internal = t_.internal[p - connector_count_];
         info.fired = StepInfo::Fired::Internal;
         info.atom = internal.atom;
         info.port = internal.port;
@@ -343,9 +348,9 @@ class FlatSteps final : public CompiledSteps {
   void recompute_untimed(std::uint32_t p) {
     bool enabled = true;
     bool eager = false;
-    if (p < t_.connectors.size() && t_.connectors[p].triggered) {
+    if (p < connector_count_ && t_.connectors[p].triggered) {
       enabled = recompute_broadcast(t_.connectors[p], eager);
-    } else if (p < t_.connectors.size()) {
+    } else if (p < connector_count_) {
       const FlatTables::Connector& c = t_.connectors[p];
       for (std::uint32_t i = c.first_port; i < c.ports_end && enabled; ++i) {
         const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
@@ -354,8 +359,7 @@ class FlatSteps final : public CompiledSteps {
       }
       if (enabled) enabled = value_allowed(c);
     } else {
-      const std::optional<AtomPortValue>& offer =
-          offers_[t_.internal[p - t_.connectors.size()].offer];
+      const std::optional<AtomPortValue>& offer = offers_[t_.internal[p - connector_count_].offer];
       enabled = offer.has_value();
       eager = enabled && offer->constraint.urgency == bipc::Urgency::Eager;
     }
@@ -399,7 +403,7 @@ class FlatSteps final : public CompiledSteps {
     raw.interval.left_open = raw.interval.right_open = false;
     raw.urgency = bipc::Urgency::Lazy;
     bool enabled = true;
-    if (p < t_.connectors.size()) {
+    if (p < connector_count_) {
       const FlatTables::Connector& c = t_.connectors[p];
       for (std::uint32_t i = c.first_port; i < c.ports_end && enabled; ++i) {
         const std::optional<AtomPortValue>& offer = offers_[t_.ports[i].offer];
@@ -408,8 +412,7 @@ class FlatSteps final : public CompiledSteps {
       }
       enabled = enabled && !raw.interval.empty() && value_allowed(c);
     } else {
-      const std::optional<AtomPortValue>& offer =
-          offers_[t_.internal[p - t_.connectors.size()].offer];
+      const std::optional<AtomPortValue>& offer = offers_[t_.internal[p - connector_count_].offer];
       enabled = offer.has_value();
       if (enabled) detail::add_offer_constraint(raw, offer->constraint);
     }
@@ -438,6 +441,8 @@ class FlatSteps final : public CompiledSteps {
   const bipc::ir::System& system_;
   const Layout& layout_;
   const FlatTables t_;
+  // t_'s connectors and positions, counted once: a vector's size divides by its element's.
+  const std::uint32_t connector_count_, position_count_;
   Runtime* runtime_ = nullptr;
   RunState* state_ = nullptr;
   RandomStream* random_ = nullptr;
