@@ -242,22 +242,15 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
   // clock that has already advanced truncates the distribution at its value.
   const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  const DateDistribution::Masses at_lower =
-      fixed ? fixed->masses(lower) : distribution.masses(lower);
-  double sample = 0.0;
-  if (at_lower.below > 0.0) {
-    const std::optional<double> above = distribution.sample_above(lower, at_lower, random_);
-    if (!above) {
-      error = "missed support: " + where() + " draws from " + distribution.describe() +
-              " but its clock " + type.clocks[annotation.clock].name + " is already at " +
-              std::to_string(lower) + ", beyond every date of the distribution";
-      return false;
-    }
-    sample = *above;
-  } else {
-    sample = distribution.sample(random_);
+  const std::optional<double> sample = distribution.sample_above(
+      lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); });
+  if (!sample) {
+    error = "missed support: " + where() + " draws from " + distribution.describe() +
+            " but its clock " + type.clocks[annotation.clock].name + " is already at " +
+            std::to_string(lower) + ", beyond every date of the distribution";
+    return false;
   }
-  date = std::max(window.first(), runtime.clock_reaches(atom, annotation.clock, sample));
+  date = std::max(window.first(), runtime.clock_reaches(atom, annotation.clock, *sample));
   return true;
 }
 

@@ -327,10 +327,13 @@ double DateDistribution::quantile(double p) const {
   return quantile_of(p, 1.0 - p);
 }
 
-double DateDistribution::sample(RandomStream& random) const {
-  const double u = random.uniform01_open();
+double DateDistribution::inverse_of_uniform(double u) const {
   // 1 - u is exact for u >= 1/2, the only case where it is used.
   return quantile_of(u, 1.0 - u);
+}
+
+double DateDistribution::sample(RandomStream& random) const {
+  return inverse_of_uniform(random.uniform01_open());
 }
 
 DateDistribution::Masses DateDistribution::masses(double x) const {
@@ -338,17 +341,19 @@ DateDistribution::Masses DateDistribution::masses(double x) const {
   return {below, below <= 0.5 ? 1.0 - below : survival(x)};
 }
 
-std::optional<double> DateDistribution::sample_above(double lower, Masses at_lower,
-                                                     RandomStream& random) const {
+std::optional<double> DateDistribution::sample_in_tail(double lower, double u, double x,
+                                                       Masses at_lower) const {
   const auto [below, above] = at_lower;
+  if (!(below > 0.0)) return x;  // nothing below `lower` to condition away
   if (!(above >= kMinTailMass)) return std::nullopt;
-  const double u = random.uniform01_open();
-  // The conditional law of X given X > lower has cumulative mass F(lower) + u·P(X > lower) at
+  // u lies below F(lower) (up to rounding, hence the bound): v is uniform in (0, 1).
+  const double v = std::min(u / below, 1.0 - 0x1p-53);
+  // The conditional law of X given X > lower has cumulative mass F(lower) + v·P(X > lower) at
   // F^-1 of that; its distance to 1 is computed from the tail itself, not by cancellation.
-  double x = quantile_of(below + above * u, above * (1.0 - u));
+  double y = quantile_of(below + above * v, above * (1.0 - v));
   // Rounding can land on `lower` itself when the tail is a sliver of the support.
-  if (!(x > lower)) x = std::nextafter(lower, kInfinity);
-  return x;
+  if (!(y > lower)) y = std::nextafter(lower, kInfinity);
+  return y;
 }
 
 std::string DateDistribution::describe() const {

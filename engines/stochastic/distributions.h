@@ -120,16 +120,28 @@ class DateDistribution {
   /// One date X drawn from the distribution: X = F^-1(u) for one uniform u of the stream.
   double sample(RandomStream& random) const;
 
-  /// One date drawn exactly from X conditioned on X > lower, by inverse transform restricted to
-  /// the upper tail: u uniform in (F(lower), 1) and X = F^-1(u), evaluated as Qinv of the
-  /// remaining tail mass when that is the smaller side, so truncations far in the upper tail stay
-  /// accurate. Always > lower. nullopt when P(X > lower) < kMinTailMass: the date cannot lie
-  /// beyond `lower` (a missed support, which the caller reports as a model error).
+  /// One date drawn exactly from X conditioned on X > lower, from one uniform u: X = F^-1(u)
+  /// when that lies above `lower`, which needs no CDF (the common case of a truncation in the
+  /// lower tail). Otherwise u, uniform below F(lower) given that, is mapped to u / F(lower) and
+  /// drawn from by inverse transform restricted to the upper tail: F^-1(F(lower) + v·P(X >
+  /// lower)), evaluated as the inverse of the remaining tail mass when that is the smaller side,
+  /// so truncations far in the upper tail stay accurate. The two cases together give each x above
+  /// `lower` its density f(x) + F(lower)·f(x) / P(X > lower) = f(x) / P(X > lower). Always >
+  /// lower, unless no mass lies below `lower` (then F^-1(u) as it is). nullopt when P(X >
+  /// lower) < kMinTailMass: the date cannot lie beyond `lower` (a missed support, which the
+  /// caller reports as a model error).
   std::optional<double> sample_above(double lower, RandomStream& random) const {
-    return sample_above(lower, masses(lower), random);
+    return sample_above(lower, random, [&] { return masses(lower); });
   }
-  /// As above, for a caller that already knows masses(lower).
-  std::optional<double> sample_above(double lower, Masses at_lower, RandomStream& random) const;
+  /// As above, for a caller that keeps masses(lower): `masses_at()` gives them, called only
+  /// when F^-1(u) does not lie above `lower`.
+  template <class MassesAt>
+  std::optional<double> sample_above(double lower, RandomStream& random, MassesAt masses_at) const {
+    const double u = random.uniform01_open();
+    const double x = inverse_of_uniform(u);
+    if (x > lower) return x;
+    return sample_in_tail(lower, u, x, masses_at());
+  }
 
   /// The distribution as written in a model, e.g. "normal(10, 2)"; for error messages.
   std::string describe() const;
@@ -145,6 +157,10 @@ class DateDistribution {
   double upper_quantile(double t) const;
   // The inverse at cumulative mass w = 1 - t, through whichever of w and t is smaller.
   double quantile_of(double w, double t) const;
+  // F^-1(u) for u in (0, 1).
+  double inverse_of_uniform(double u) const;
+  // sample_above's second case: u drawn, x = F^-1(u) at or below `lower`.
+  std::optional<double> sample_in_tail(double lower, double u, double x, Masses at_lower) const;
 
   bipc::ir::Distribution kind_;
   std::array<double, 2> params_;

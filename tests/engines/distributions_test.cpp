@@ -385,6 +385,30 @@ TEST(DateDistribution, TruncationBelowTheSupportIsNoTruncation) {
   for (int i = 0; i < 100; ++i) ASSERT_EQ(d.sample_above(-5.0, a), d.sample(b));
 }
 
+TEST(DateDistribution, DrawsAboveTheTruncationAreTheUntruncatedOnes) {
+  // A truncation in the lower tail (F(5) = 0.0062 for normal(10, 2)) keeps every plain draw
+  // above it and asks for the masses only for the others, which it draws again above 5.
+  const DateDistribution d = make(Distribution::Normal, {10.0, 2.0});
+  RandomStream truncated(4005, 0), plain(4005, 0);
+  int asked = 0, redrawn = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const double x = d.sample(plain);
+    const std::optional<double> y = d.sample_above(5.0, truncated, [&] {
+      ++asked;
+      return d.masses(5.0);
+    });
+    ASSERT_TRUE(y.has_value());
+    ASSERT_GT(*y, 5.0);
+    if (x > 5.0) {
+      ASSERT_EQ(*y, x);
+    } else {
+      ++redrawn;
+    }
+  }
+  EXPECT_EQ(asked, redrawn);
+  EXPECT_GT(redrawn, 0);
+}
+
 TEST(DateDistribution, MissedSupportIsNullopt) {
   RandomStream r(5005, 0);
   EXPECT_FALSE(make(Distribution::Uniform, {0.0, 1.0}).sample_above(2.0, r));
@@ -394,7 +418,7 @@ TEST(DateDistribution, MissedSupportIsNullopt) {
   TempDir dir;
   const EmpiricalCdf cdf = load_cdf(dir.write("c.cdf", kCustomCdfText));
   EXPECT_FALSE(make(Distribution::Custom, {}, &cdf).sample_above(10.0, r));
-  EXPECT_EQ(r.draws(), 0u) << "a refused truncation draws nothing";
+  EXPECT_EQ(r.draws(), 5u) << "a refused truncation draws its one uniform";
   EXPECT_TRUE(make(Distribution::Uniform, {0.0, 1.0}).sample_above(0.999, r));
 }
 
