@@ -43,7 +43,6 @@ class SharedWindowChooser {
 
   /// floor(-mean ln u) for the last mean, u in (0, 1).
   TimeValue delay(double u) const {
-    if (u > at_most_[0][0]) return 0;
     // k: the cuts at or above u, counted two at a time without branches (as random as u).
     const Pair both = {u, u};
     Count at_or_above = {0, 0};
