@@ -255,11 +255,10 @@ class FlatSteps final : public CompiledSteps {
     return &c.steps->state_->data[t.param_slots[bound.first_param + arg]];
   }
 
-  Frame atom_frame(Index a) { return atom_frame(t_.atoms[a], t_.atoms[a].data); }
-  /// The frame of `atom`, whose data start at `data` (from the entry of a port it fires).
-  Frame atom_frame(const FlatTables::Atom& atom, std::uint32_t data) {
+  Frame atom_frame(Index a) { return atom_frame(t_.atoms[a]); }
+  Frame atom_frame(const FlatTables::Atom& atom) {
     Frame f;
-    f.atom_data = state_->data.data() + data;
+    f.atom_data = state_->data.data() + atom.data;
     f.atom_params = layout_.params.data() + atom.params;
     f.clocks = atom.has_clocks ? state_->clocks.data() + atom.clocks : nullptr;
     f.clock_units = layout_.clock_units.data() + atom.clocks;
@@ -299,13 +298,13 @@ class FlatSteps final : public CompiledSteps {
     const Index a = bound.atom;
     const std::optional<AtomPortValue>& offer = offers_[bound.offer];
     if (!offer) return true;
-    const FlatTables::Atom& atom = t_.atoms[a];
+    const FlatTables::Atom& atom = bound.of;
     if (gathers_touched() && touched_[a] != stamp_) {
       touched_[a] = stamp_;
       touched_list_.push_back(a);
     }
-    const Frame f = atom_frame(atom, bound.data);
-    std::uint8_t* marking = state_->marking.data() + bound.places;
+    const Frame f = atom_frame(atom);
+    std::uint8_t* marking = state_->marking.data() + atom.places;
     if (!code_.atom_fire(atom.type, offer->transition, marking, f)) return false;
     if (atom.has_internal_transitions) {
       for (;;) {

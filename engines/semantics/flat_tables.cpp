@@ -80,7 +80,7 @@ bool covers_system(const System& system, const Layout& layout, const ModelCode& 
 
 FlatTables::AtomPort atom_port(const FlatTables& tables, Index a, Index port) {
   const FlatTables::Atom& atom = tables.atoms[a];
-  return {a, port, atom.first_offer + port, atom.data, atom.places};
+  return {atom, a, port, atom.first_offer + port};
 }
 
 FlatTables::Connector connector_entry(const System& system, const Layout& layout, Index k,
