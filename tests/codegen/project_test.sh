@@ -123,6 +123,16 @@ same "lamp FILE --compiled" "$bin/smcbip" simulate --compiled "$work/lamp" --see
 code=0
 "$bin/smcbip" simulate "$lamp" --root 'Top()' --seed 1 --limit 4 > /dev/null 2>&1 || code=$?
 [[ $code != 0 ]] || fail "the interpreter ran the lamp without its extern C++"
+# The lamp's extern names it in Latin-1: its JSONL trace writes U+FFFD for that byte and stays
+# JSON (without the replacement, the trace ends in an internal error).
+"$bin/smcbip" simulate --compiled "$work/lamp" --seed 1 --limit 2 --trace jsonl \
+  > "$work/lamp.jsonl" 2> "$work/lamp_jsonl.err" || fail "the lamp's JSONL trace failed"
+python3 - "$work/lamp.jsonl" <<'PY' || fail "the lamp's JSONL trace does not name it d\ufffdbut"
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1], encoding="utf-8") if l.startswith("{")]
+names = [l["data"]["ROOT.lamp.name"] for l in lines if "data" in l]
+assert names == ["", "d\ufffdbut", "d\ufffdbut"], names
+PY
 
 # A host program embedding the --no-main library: it steps the Component and reads its data.
 mkdir -p "$work/host"
