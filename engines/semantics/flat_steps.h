@@ -292,8 +292,8 @@ class FlatSteps final : public CompiledSteps {
   }
 
   /// Runtime::fire_port: the offered transition, the internal transitions it enables, the new
-  /// offers; false where the Runtime reports an error. The offer, marking and data are found
-  /// through the port's entry, so that their loads need not wait for the atom's.
+  /// offers; false where the Runtime reports an error. The port's entry holds its offer's index
+  /// and its atom's entry, so that firing it reads no other table first.
   bool fire_port(const FlatTables::AtomPort& bound) {
     const Index a = bound.atom;
     const std::optional<AtomPortValue>& offer = offers_[bound.offer];

@@ -1,7 +1,6 @@
 #include "engines/stochastic/date_planner.h"
 
 #include <cmath>
-#include <limits>
 
 namespace smcbip::engines {
 
@@ -70,8 +69,7 @@ std::optional<DatePlanner::Fixed> DatePlanner::fixed_distribution(
   }
   // Invalid parameters are left to each draw, which reports them.
   auto made = make_distribution(annotation, params);
-  if (auto* distribution = std::get_if<DateDistribution>(&made))
-    return Fixed{*distribution, std::numeric_limits<double>::quiet_NaN(), {}};
+  if (auto* distribution = std::get_if<DateDistribution>(&made)) return Fixed(*distribution);
   return std::nullopt;
 }
 

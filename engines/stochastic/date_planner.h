@@ -99,6 +99,7 @@ class DatePlanner {
   // A distribution made once, and its last truncation point with the masses either side: a
   // clock reset when its port is offered truncates at 0 every time.
   struct Fixed {
+    explicit Fixed(const DateDistribution& made) : distribution(made) {}
     DateDistribution distribution;
     double lower = std::numeric_limits<double>::quiet_NaN();  // equal to nothing at first
     DateDistribution::Masses at_lower;
