@@ -13,10 +13,10 @@ bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
 
-// Longest first, so that `<=` wins over `<` and `=?` over `=`.
-constexpr std::array<std::string_view, 10> kTwoCharSymbols = {"<=", ">=", "==", "!=", "&&",
-                                                              "||", "->", "=?", "[]", "<>"};
-constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>";
+// Longest first, so that `<=>` wins over `<=`, `<=` over `<` and `=?` over `=`.
+constexpr std::array<std::string_view, 14> kSymbols = {"<=>", "<->", "<=", ">=", "==", "!=", "&&",
+                                                       "||",  "->",  "=>", "=?", "[]", "<>", "-->"};
+constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>&|";
 
 class Lexer {
  public:
@@ -86,11 +86,12 @@ class Lexer {
       return true;
     }
     if (is_digit(c)) return number(token);
-    for (std::string_view symbol : kTwoCharSymbols) {
-      if (text_.substr(pos_, 2) == symbol) {
+    if (c == '"') return label(token);
+    for (std::string_view symbol : kSymbols) {
+      if (text_.substr(pos_, symbol.size()) == symbol) {
         token.kind = TokenKind::Symbol;
         token.text = std::string(symbol);
-        advance(2);
+        advance(symbol.size());
         return true;
       }
     }
@@ -109,6 +110,22 @@ class Lexer {
     diagnostics_.error(here(), "unexpected character " + shown + " in a property");
     advance();
     return false;
+  }
+
+  // A PRISM label, `"deadlock"`: its name, without the quotes, on one line.
+  bool label(Token& token) {
+    const bipc::Location at = here();
+    advance();
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && peek() != '"' && peek() != '\n') advance();
+    if (peek() != '"') {
+      diagnostics_.error(at, "unterminated label: expected '\"' before the end of the line");
+      return false;
+    }
+    token.kind = TokenKind::Label;
+    token.text = std::string(text_.substr(start, pos_ - start));
+    advance();
+    return true;
   }
 
   // Digits, an optional fraction and exponent, then an optional unit suffix (s, ms, us, ns).
@@ -190,6 +207,8 @@ std::string describe(const Token& token) {
       return "number " + token.text;
     case TokenKind::Symbol:
       return "'" + token.text + "'";
+    case TokenKind::Label:
+      return "label \"" + token.text + "\"";
   }
   return "?";
 }

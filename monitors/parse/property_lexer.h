@@ -16,7 +16,8 @@ enum class TokenKind : std::uint8_t {
   Name,    // identifiers and keywords alike: the parser tells keywords by their text
   Number,  // with its unit, if a suffix follows
   Symbol,  // punctuation and operators, by text: ( ) [ ] { } , ; : . ! ? # + - * / % = < <= >
-           // >= == != && || -> =? [] <>
+           // >= == != && || & | -> => <-> <=> =? [] <> -->
+  Label,   // a PRISM label, `"deadlock"`: its text without the quotes
 };
 
 struct Token {

@@ -36,10 +36,27 @@ struct TraceName {
   std::string place;  // Place
 };
 
-/// One step of a trace as a state: its data, marked places and fired interaction.
+/// The clocks a trace's header declares: nanoseconds per unit of each.
+using TraceClocks = std::unordered_map<std::string, double>;
+
+/// One step of a trace as a state: its data, marked places and fired interaction; the data its
+/// header declares clocks grow at their rates after the step.
 class StepState final : public StateView {
  public:
-  explicit StepState(const std::unordered_map<const Expr*, TraceName>& names) : names_(names) {}
+  StepState(const std::unordered_map<const Expr*, TraceName>& names, const TraceClocks& clocks,
+            double ticks_per_ms)
+      : names_(names), clocks_(clocks), ticks_per_ms_(ticks_per_ms) {}
+
+  double slope(const Expr& name) const override {
+    const TraceName& n = names_.at(&name);
+    if (n.kind != TraceName::Kind::Data) return 0;
+    const auto clock = clocks_.find(n.key);
+    if (clock == clocks_.end()) return 0;
+    const Json* rate = member(member(&line_, "rates"), n.key);
+    const double r = rate != nullptr && rate->is_number() ? rate->get<double>() : 1.0;
+    // Units per millisecond, then per tick.
+    return r * 1e6 / clock->second / ticks_per_ms_;
+  }
 
   void read(Json line) { line_ = std::move(line); }
 
@@ -74,6 +91,8 @@ class StepState final : public StateView {
   }
 
   const std::unordered_map<const Expr*, TraceName>& names_;
+  const TraceClocks& clocks_;
+  double ticks_per_ms_;
   Json line_;
 };
 
@@ -87,10 +106,18 @@ class TraceReader {
     std::string text;
     while (std::getline(in_, text)) {
       ++line_;
-      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+      if (text.find_first_not_of(" \t\r") == std::string::npos) {
+        ++blank_lines_;
+        continue;
+      }
       if (!end_.empty()) fail("nothing may follow the end line");
       Json line = Json::parse(text, nullptr, /*allow_exceptions=*/false);
       if (line.is_discarded() || !line.is_object()) fail("expected a JSON object on one line");
+      if (line.contains("header")) {
+        if (line_ != 1 + blank_lines_) fail("the header must be the first line");
+        read_header(line["header"]);
+        continue;
+      }
       if (line.contains("end")) {
         if (!line["end"].is_string()) fail("expected \"end\" to be a string");
         end_ = line["end"].get<std::string>();
@@ -103,6 +130,7 @@ class TraceReader {
   }
 
   const std::string& end() const { return end_; }
+  const TraceClocks& clocks() const { return clocks_; }
   [[noreturn]] void fail(const std::string& message) const {
     throw TraceError(path_, line_, message);
   }
@@ -120,10 +148,27 @@ class TraceReader {
     }
   }
 
+  /// The header's clocks: `"clocks": {"ROOT.a.x": {"unit_ns": 1000000}, ...}`.
+  void read_header(const Json& header) {
+    if (!header.is_object()) fail("expected \"header\" to be an object");
+    if (!header.contains("clocks")) return;
+    const Json& clocks = header["clocks"];
+    if (!clocks.is_object()) fail("expected the header's \"clocks\" to be an object");
+    for (const auto& [name, clock] : clocks.items()) {
+      const Json* unit =
+          clock.is_object() && clock.contains("unit_ns") ? &clock["unit_ns"] : nullptr;
+      if (unit == nullptr || !unit->is_number() || !(unit->get<double>() > 0)) {
+        fail("expected clock \"" + name + "\" to give its unit as \"unit_ns\" > 0");
+      }
+      clocks_[name] = unit->get<double>();
+    }
+  }
+
   std::istream& in_;
   std::string path_;
-  std::size_t line_ = 0;
+  std::size_t line_ = 0, blank_lines_ = 0;
   std::string end_;
+  TraceClocks clocks_;
 };
 
 /// Binds the names of the file's predicates to the keys of the first step.
@@ -141,7 +186,9 @@ class NameBinder {
 
   void expression(const Expr& e) {
     for (const auto& operand : e.operands) expression(*operand);
-    if (e.kind != Expr::Kind::Name || constants_.contains(e.path)) return;
+    if (e.kind != Expr::Kind::Name || is_builtin(e.reference) || constants_.contains(e.path)) {
+      return;
+    }
     std::vector<TraceName> found;
     for (const std::string& key : data_) {
       if (same_path(key, e.path)) found.push_back({TraceName::Kind::Data, key, ""});
@@ -276,6 +323,20 @@ std::vector<Bindings> query_bindings(const PropertyFile& file, const Query& quer
 
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
                         const TimeScale& scale, bipc::Diagnostics& diagnostics, Reading reading) {
+  for (const Query& q : file.queries) {
+    if (q.kind == Query::Kind::Compare || q.kind == Query::Kind::Simulate) {
+      diagnostics.error(q.at,
+                        "a comparison of two probabilities or a simulate query needs runs "
+                        "of a model: use smcbip check");
+    }
+    if (q.kind == Query::Kind::Invariant || q.kind == Query::Kind::Reachable) {
+      diagnostics.error(q.at, std::string(q.kind == Query::Kind::Invariant ? "A[]" : "E<>") +
+                                  " is a question over every reachable state, which one recorded "
+                                  "run cannot answer: the invariant prover (smcbip prove, to "
+                                  "come) answers it");
+    }
+  }
+  if (diagnostics.has_errors()) return {};
   TraceReader reader(in, path);
   std::optional<Json> line = reader.next();
   if (!line) reader.fail("expected at least one step");
@@ -327,7 +388,7 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   }
 
   TraceReport report;
-  StepState state(names);
+  StepState state(names, reader.clocks(), scale.ticks_per_unit);
   online::Tick first = 0, last = 0;
   for (; line; line = reader.next(), ++report.steps) {
     const double time = (*line)["time"].get<double>() * scale.ticks_per_unit;
@@ -346,12 +407,17 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
     }
   }
   report.end = reader.end();
-  const RunEnd end = report.end == "deadlock" ? RunEnd::Deadlock : RunEnd::Cut;
+  const RunEnd end = report.end == "deadlock"   ? RunEnd::Deadlock
+                     : report.end == "timelock" ? RunEnd::Timelock
+                                                : RunEnd::Cut;
   for (auto& sweep : sweeps) sweep->end(end);
   for (Judge& judge : judges) {
     if (judge.monitor) judge.result.verdict = judge.monitor->end(end);
     if (judge.sweep) judge.result.verdict = judge.sweep->verdict(judge.value);
-    if (judge.extremum) judge.result.value = judge.extremum->value();
+    if (judge.extremum) {
+      judge.extremum->end(end);
+      judge.result.value = judge.extremum->value();
+    }
     report.results.push_back(std::move(judge.result));
   }
   return report;

@@ -33,6 +33,16 @@ bool save_trace(const std::string& folder, std::size_t query, std::uint64_t inde
   return false;
 }
 
+/// Why `A[] phi` and `E<> phi` get no statistical answer, and what answers them.
+std::string exact_only(const monitors::Query& q) {
+  const bool all = q.kind == monitors::Query::Kind::Invariant;
+  return std::string(all ? "A[] phi asks whether phi holds in every reachable state"
+                         : "E<> phi asks whether phi holds in some reachable state") +
+         ", which sampled runs cannot show: it is answered exactly by the invariant prover "
+         "(smcbip prove, to come); statistically, " +
+         (all ? "P>=1 [ G phi ]" : "P>0 [ F phi ]") + " tests the runs";
+}
+
 /// What each point of a query is judged at.
 CheckOptions point_options(const monitors::Query& q, const QueryPoints& query,
                            const CheckOptions& options, bool simultaneous) {
@@ -63,6 +73,18 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     r.method = judged.method;
     r.alpha = q.kind == monitors::Query::Kind::Expectation ? 1 - judged.confidence : judged.alpha;
     r.split = simultaneous && !query.swept ? n : 1;
+  }
+  if (q.kind == monitors::Query::Kind::Invariant || q.kind == monitors::Query::Kind::Reachable) {
+    for (QueryResult& r : results) r.error = exact_only(q);
+    return results;
+  }
+  if (q.kind == monitors::Query::Kind::Compare || q.kind == monitors::Query::Kind::Simulate) {
+    for (QueryResult& r : results) {
+      r.error =
+          "comparisons of two probabilities and simulate queries are read but not "
+          "answered yet";
+    }
+    return results;
   }
   if (q.kind == monitors::Query::Kind::Expectation && !q.pr_form) {
     for (QueryResult& r : results) {

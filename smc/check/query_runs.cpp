@@ -119,9 +119,11 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
     } else if (!monitors_.empty()) {
       outcomes[p].verdict = monitors_[p]->verdict();
     } else {
-      // An expectation: a run that observed nothing has no value (NaN, as the mean then says).
-      outcomes[p] = {Verdict::True,
-                     extrema_[p]->value().value_or(std::numeric_limits<double>::quiet_NaN())};
+      // An expectation: a run cut short before its bound has no value, and is undecided as
+      // a path formula's run would be.
+      const std::optional<double> value = extrema_[p]->value();
+      outcomes[p] = {value ? Verdict::True : Verdict::Undecided,
+                     value.value_or(std::numeric_limits<double>::quiet_NaN())};
     }
   }
 }

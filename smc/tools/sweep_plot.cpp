@@ -159,7 +159,7 @@ class Panel {
     label(g, (left + right) / 2, kHeight - 16, axis_, "middle");
     const std::string what =
         q.kind == monitors::Query::Kind::Expectation
-            ? std::string(q.maximum ? "max: " : "min: ") + to_string(*q.observed)
+            ? std::string(monitors::observation_keyword(q.observe)) + ": " + to_string(*q.observed)
             : "probability";
     label(g, 20, (top + bottom) / 2, what, "middle",
           "rotate(-90 20 " + text((top + bottom) / 2) + ")");
