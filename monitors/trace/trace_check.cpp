@@ -243,8 +243,11 @@ void names_in(const Formula& f, std::set<std::string>& names) {
 std::set<std::string> names_in(const Query& q) {
   std::set<std::string> names;
   names_in(q.run, names);
+  names_in(q.other_run, names);
   if (q.formula) names_in(*q.formula, names);
+  if (q.other) names_in(*q.other, names);
   if (q.observed) names_in(*q.observed, names);
+  for (const auto& e : q.series) names_in(*e, names);
   return names;
 }
 

@@ -9,6 +9,7 @@
 
 #include "bipc/output_file.h"
 #include "smc/check/answer.h"
+#include "smc/check/compare.h"
 #include "smc/check/ordered_sampler.h"
 #include "smc/check/query_runs.h"
 #include "smc/check/remote_runs.h"
@@ -78,12 +79,11 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     for (QueryResult& r : results) r.error = exact_only(q);
     return results;
   }
-  if (q.kind == monitors::Query::Kind::Compare || q.kind == monitors::Query::Kind::Simulate) {
-    for (QueryResult& r : results) {
-      r.error =
-          "comparisons of two probabilities and simulate queries are read but not "
-          "answered yet";
-    }
+  if (q.kind == monitors::Query::Kind::Compare) {
+    return compare_probabilities(system, query, judged);
+  }
+  if (q.kind == monitors::Query::Kind::Simulate) {
+    for (QueryResult& r : results) r.error = "simulate queries are read but not answered yet";
     return results;
   }
   if (q.kind == monitors::Query::Kind::Expectation && !q.pr_form) {
@@ -249,6 +249,8 @@ const char* method_name(Method method) {
       return "mean";
     case Method::Band:
       return "dkw";
+    case Method::Paired:
+      return "paired sprt";
     case Method::Auto:
       break;
   }

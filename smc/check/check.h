@@ -21,7 +21,8 @@ class RemoteRuns;
 
 /// Band: PESTIM's runs judged for every value of a monotone parameter at once, with DKW's
 /// simultaneous band (explore).
-enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band };
+/// Paired: the SPRT on runs judged for two formulas, which compares their probabilities.
+enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band, Paired };
 
 /// How runs the monitor leaves undecided count: as failures, not at all (another run is
 /// drawn), or not at all up to 1% of the runs, beyond which the query fails with an error.

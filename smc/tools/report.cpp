@@ -12,7 +12,8 @@ namespace smcbip::tools {
 namespace {
 
 bool has_interval(const smc::QueryResult& r) {
-  return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp;
+  return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp &&
+         r.method != smc::Method::Paired;
 }
 
 std::string verdict_text(const smc::QueryResult& r) {

@@ -105,6 +105,34 @@ TEST(ContinuousClocks, ExpectationsFollowTheClocksBetweenSteps) {
   }
 }
 
+TEST(ContinuousClocks, ComparesTwoProbabilitiesOnTheSameRuns) {
+  // P(F[0,2] r.s1) = 1 - e^-2 (0.86) against P(G[0,1] r.s0) = e^-1 (0.37): the paired SPRT
+  // (delta 0.01 around 1/2 for the share of runs where only the left one holds, here
+  // (0.86 - 0.37) / (1 - 0.37 + ...) far above) decides for the left at alpha = beta = 0.01.
+  const bipc::ir::System& system = tests::model_in("tests/smc/models", "clock_reset.bip");
+  CheckOptions options;
+  options.alpha = options.beta = 0.01;
+  options.seed = 35;
+  options.threads = 2;
+  const auto results = check_properties(system,
+                                        tests::properties("Pr[<=2](F r.s1) >= Pr[<=1](G r.s0)\n"
+                                                          "Pr[<=2](F r.s1) < Pr[<=1](G r.s0)\n"
+                                                          "Pr[<=1](G r.s0) > Pr[<=2](F r.s1)\n",
+                                                          system),
+                                        options);
+  ASSERT_EQ(results.size(), 3u);
+  for (const QueryResult& r : results) {
+    EXPECT_EQ(r.error, "");
+    EXPECT_EQ(r.method, Method::Paired);
+    ASSERT_TRUE(r.verdict.has_value());
+  }
+  EXPECT_TRUE(*results[0].verdict);
+  EXPECT_FALSE(*results[1].verdict);
+  EXPECT_FALSE(*results[2].verdict);
+  // The estimate is the difference of the two estimates on the runs made.
+  EXPECT_NEAR(results[0].estimate, 1 - std::exp(-2.0) - std::exp(-1.0), 0.25);
+}
+
 TEST(ContinuousClocks, PrismsSpellingsOfTheDieReadAsPrismReadsThem) {
   // P=? [ F s=7 & d=1 ] is F (s=7 & d=1) in PRISM: 1/6 (models/knuth_yao.bip).
   CheckOptions options;
