@@ -13,6 +13,7 @@
 #include "smc/check/ordered_sampler.h"
 #include "smc/check/query_runs.h"
 #include "smc/check/remote_runs.h"
+#include "smc/check/simulate_runs.h"
 
 namespace smcbip::smc {
 namespace {
@@ -82,10 +83,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   if (q.kind == monitors::Query::Kind::Compare) {
     return compare_probabilities(system, query, judged);
   }
-  if (q.kind == monitors::Query::Kind::Simulate) {
-    for (QueryResult& r : results) r.error = "simulate queries are read but not answered yet";
-    return results;
-  }
+  if (q.kind == monitors::Query::Kind::Simulate)
+    return simulate_trajectories(system, query, options);
   if (q.kind == monitors::Query::Kind::Expectation && !q.pr_form) {
     for (QueryResult& r : results) {
       r.error = "E=? [ ... ] needs a run bound and a number of runs here: write E[<=T; N](...)";

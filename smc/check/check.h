@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,6 +65,15 @@ struct CheckOptions {
   std::function<void(const Progress&)> progress;
 };
 
+/// The trajectories of a simulate query: per run, its points in time order, each the time (in
+/// the model's unit, milliseconds) and then one value per expression. Where an expression
+/// grows between two steps (a clock), the point just before the later step shows its value
+/// there, so that lines between points follow it.
+struct Trajectories {
+  std::vector<std::string> series;                     // the expressions, as echoed
+  std::vector<std::vector<std::vector<double>>> runs;  // run, point, {time, values...}
+};
+
 struct QueryResult {
   std::size_t query = 0;
   monitors::Bindings parameters;
@@ -78,6 +88,7 @@ struct QueryResult {
   double alpha = 0;
   std::size_t split = 1;
   std::string error;  // why the query has no answer (too many undecided runs)
+  std::shared_ptr<const Trajectories> trajectories;  // simulate queries
 };
 
 const char* method_name(Method method);

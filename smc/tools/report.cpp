@@ -71,10 +71,17 @@ std::string query_text(const Report& report, const smc::QueryResult& r) {
 
 void print_results(std::ostream& out, const Report& report) {
   for (const smc::QueryResult& r : report.results) {
-    out << query_text(report, r) << parameters_text(r) << "\n  " << smc::method_name(r.method)
-        << ": ";
+    out << query_text(report, r) << parameters_text(r) << "\n  "
+        << (r.trajectories ? "simulate" : smc::method_name(r.method)) << ": ";
     if (!r.error.empty()) {
       out << "no answer: " << r.error << "\n";
+      continue;
+    }
+    if (r.trajectories) {
+      std::size_t points = 0;
+      for (const auto& run : r.trajectories->runs) points += run.size();
+      out << r.samples << " runs, " << points << " points, " << number_text(r.seconds)
+          << " s (--trajectories DIR writes them as CSV and SVG)\n";
       continue;
     }
     if (r.verdict) out << verdict_text(r) << ", ";
@@ -135,6 +142,10 @@ std::string json_text(const Report& report) {
     line["seconds"] = r.seconds;
     line["alpha"] = r.alpha;
     if (!r.error.empty()) line["error"] = r.error;
+    if (r.trajectories) {
+      line["series"] = r.trajectories->series;
+      line["runs"] = r.trajectories->runs;
+    }
     results.push_back(std::move(line));
   }
   Json out;

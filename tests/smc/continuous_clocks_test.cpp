@@ -133,6 +133,34 @@ TEST(ContinuousClocks, ComparesTwoProbabilitiesOnTheSameRuns) {
   EXPECT_NEAR(results[0].estimate, 1 - std::exp(-2.0) - std::exp(-1.0), 0.25);
 }
 
+TEST(ContinuousClocks, SimulateFollowsTheExpressionsToTheBound) {
+  // Each run: y grows from 0, is reset at T (the time of the point where x - y jumps to T),
+  // and grows again after the deadlock up to 4 ms, where y = 4 - T.
+  const bipc::ir::System& system = tests::model_in("tests/smc/models", "clock_reset.bip");
+  CheckOptions options;
+  options.seed = 36;
+  const auto results = check_properties(
+      system, tests::properties("simulate [<=4; 20] { r.y, r.x - r.y }\n", system), options);
+  ASSERT_EQ(results.size(), 1u);
+  ASSERT_TRUE(results[0].trajectories);
+  const Trajectories& t = *results[0].trajectories;
+  EXPECT_EQ(t.series, (std::vector<std::string>{"r.y", "r.x - r.y"}));
+  ASSERT_EQ(t.runs.size(), 20u);
+  for (const auto& run : t.runs) {
+    ASSERT_GE(run.size(), 2u);
+    EXPECT_EQ(run.front(), (std::vector<double>{0, 0, 0}));
+    const std::vector<double>& end = run.back();
+    EXPECT_DOUBLE_EQ(end[0], 4);
+    const double reset = end[2];  // x - y after the reset is T
+    if (reset > 0) {
+      EXPECT_NEAR(end[1], 4 - reset, 1e-9);
+    } else {
+      EXPECT_NEAR(end[1], 4, 1e-9);  // no reset within 4 ms
+    }
+    for (std::size_t i = 1; i < run.size(); ++i) EXPECT_LE(run[i - 1][0], run[i][0]);
+  }
+}
+
 TEST(ContinuousClocks, PrismsSpellingsOfTheDieReadAsPrismReadsThem) {
   // P=? [ F s=7 & d=1 ] is F (s=7 & d=1) in PRISM: 1/6 (models/knuth_yao.bip).
   CheckOptions options;
