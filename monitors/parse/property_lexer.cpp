@@ -18,22 +18,29 @@ constexpr std::array<std::string_view, 14> kSymbols = {"<=>", "<->", "<=", ">=",
                                                        "||",  "->",  "=>", "=?", "[]", "<>", "-->"};
 constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>&|";
 
-class Lexer {
+}  // namespace
+
+class TokenStream::Lexer {
  public:
   Lexer(std::string_view text, std::uint32_t file, bipc::Diagnostics& diagnostics)
-      : text_(text), file_(file), diagnostics_(diagnostics) {}
+      : text_(text),
+        file_(file),
+        diagnostics_(diagnostics),
+        errors_at_start_(diagnostics.error_count()) {}
 
-  std::vector<Token> run() {
-    std::vector<Token> tokens;
+  /// The next token; End at the end of the text, or once the file has too many errors to be
+  /// worth reading on (a binary file would give one per byte).
+  Token next() {
     for (;;) {
       skip_space_and_comments();
       Token token;
       token.at = here();
-      if (pos_ >= text_.size()) {
-        tokens.push_back(std::move(token));
-        return tokens;
+      if (diagnostics_.error_count() >= errors_at_start_ + kMaxErrors) {
+        diagnostics_.error(here(), "too many errors, the rest of the file is not read");
+        pos_ = text_.size();
+        return token;
       }
-      if (lex(token)) tokens.push_back(std::move(token));
+      if (pos_ >= text_.size() || lex(token)) return token;
     }
   }
 
@@ -183,18 +190,37 @@ class Lexer {
     return true;
   }
 
+  // Enough to show what is wrong with a file; beyond, the errors are the same again.
+  static constexpr std::size_t kMaxErrors = 20;
+
   std::string_view text_;
   std::uint32_t file_;
   bipc::Diagnostics& diagnostics_;
+  std::size_t errors_at_start_;
   std::size_t pos_ = 0;
   std::uint32_t line_ = 1, column_ = 1;
 };
 
-}  // namespace
+TokenStream::TokenStream(std::string_view text, std::uint32_t file, bipc::Diagnostics& diagnostics)
+    : lexer_(std::make_unique<Lexer>(text, file, diagnostics)) {}
 
-std::vector<Token> lex_properties(std::string_view text, std::uint32_t file,
-                                  bipc::Diagnostics& diagnostics) {
-  return Lexer(text, file, diagnostics).run();
+TokenStream::~TokenStream() = default;
+
+void TokenStream::push_front(Token token) { ahead_.push_front(std::move(token)); }
+
+const Token& TokenStream::peek(std::size_t ahead) {
+  while (ahead_.size() <= ahead && (ahead_.empty() || ahead_.back().kind != TokenKind::End)) {
+    ahead_.push_back(lexer_->next());
+  }
+  return ahead < ahead_.size() ? ahead_[ahead] : ahead_.back();
+}
+
+const Token& TokenStream::take() {
+  peek();
+  previous_ = ahead_.front();
+  ++taken_;
+  if (ahead_.front().kind != TokenKind::End) ahead_.pop_front();
+  return previous_;
 }
 
 std::string describe(const Token& token) {

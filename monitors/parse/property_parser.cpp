@@ -57,14 +57,14 @@ bool is_reserved(const Token& t) {
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, bipc::Diagnostics& diagnostics)
-      : tokens_(std::move(tokens)), diagnostics_(diagnostics) {}
+  Parser(detail::TokenStream& tokens, bipc::Diagnostics& diagnostics)
+      : tokens_(tokens), diagnostics_(diagnostics) {}
 
   PropertyFile file() {
     PropertyFile out;
     while (peek().kind != TokenKind::End) {
       if (symbol(";")) continue;
-      statement_start_ = pos_;
+      statement_start_ = tokens_.taken();
       try {
         statement(out);
       } catch (const Abandon&) {
@@ -76,20 +76,16 @@ class Parser {
 
  private:
   // Tokens.
-  const Token& peek(std::size_t ahead = 0) const {
-    const std::size_t i = pos_ + ahead;
-    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  // A reference from peek() holds until the token is taken; one from take() until the next.
+  const Token& peek(std::size_t ahead = 0) { return tokens_.peek(ahead); }
+  const Token& take() { return tokens_.take(); }
+  bool is_symbol(std::string_view text, std::size_t ahead = 0) {
+    const Token& t = peek(ahead);
+    return t.kind == TokenKind::Symbol && t.text == text;
   }
-  const Token& take() {
-    const Token& t = peek();
-    if (pos_ + 1 < tokens_.size()) ++pos_;
-    return t;
-  }
-  bool is_symbol(std::string_view text, std::size_t ahead = 0) const {
-    return peek(ahead).kind == TokenKind::Symbol && peek(ahead).text == text;
-  }
-  bool is_word(std::string_view text, std::size_t ahead = 0) const {
-    return peek(ahead).kind == TokenKind::Name && peek(ahead).text == text;
+  bool is_word(std::string_view text, std::size_t ahead = 0) {
+    const Token& t = peek(ahead);
+    return t.kind == TokenKind::Name && t.text == text;
   }
   bool symbol(std::string_view text) {
     if (!is_symbol(text)) return false;
@@ -108,18 +104,20 @@ class Parser {
   void resynchronise() {
     // The failing token may itself start the next statement (a statement cut short at the end
     // of its line); it is skipped only when the failed statement consumed nothing.
-    if (pos_ > statement_start_ && starts_statement_line(pos_)) return;
+    if (tokens_.taken() > statement_start_ && starts_statement_line()) return;
     std::uint32_t line = peek().at.line;
     take();
     while (peek().kind != TokenKind::End) {
       if (symbol(";")) return;
-      if (peek().at.line != line && starts_statement_line(pos_)) return;
+      if (peek().at.line != line && starts_statement_line()) return;
       line = take().at.line;
     }
   }
-  bool starts_statement_line(std::size_t i) const {
-    const Token& t = tokens_[i];
-    const bool first_on_line = i == 0 || tokens_[i - 1].at.line != t.at.line;
+  // Whether the next token starts its line and a statement.
+  bool starts_statement_line() {
+    const Token& t = peek();
+    const Token* before = tokens_.previous();
+    const bool first_on_line = before == nullptr || before->at.line != t.at.line;
     return first_on_line && (t.at.column == 1 || is_statement_keyword(t));
   }
 
@@ -139,7 +137,7 @@ class Parser {
     }
     // Statements end with `;` or at the end of their line.
     if (!symbol(";") && peek().kind != TokenKind::End &&
-        peek().at.line == tokens_[pos_ - 1].at.line) {
+        peek().at.line == tokens_.previous()->at.line) {
       fail("';' or a new line after the statement");
     }
   }
@@ -436,7 +434,7 @@ class Parser {
   };
 
   bool is_any(std::initializer_list<std::string_view> symbols,
-              std::initializer_list<std::string_view> words) const {
+              std::initializer_list<std::string_view> words) {
     for (std::string_view s : symbols) {
       if (is_symbol(s)) return true;
     }
@@ -767,9 +765,8 @@ class Parser {
     return e;
   }
 
-  std::vector<Token> tokens_;
+  detail::TokenStream& tokens_;
   bipc::Diagnostics& diagnostics_;
-  std::size_t pos_ = 0;
   std::size_t statement_start_ = 0;
   int depth_ = 0;
 };
@@ -791,14 +788,14 @@ std::string braced_values(const std::string& text) {
 std::optional<Declaration> given_parameter(const std::string& written, std::uint32_t source,
                                            bipc::Diagnostics& diagnostics) {
   const std::string text = braced_values(written);
-  std::vector<Token> tokens = detail::lex_properties(text, source, diagnostics);
+  detail::TokenStream tokens(text, source, diagnostics);
   Token keyword;
   keyword.kind = TokenKind::Name;
   keyword.text = "param";
-  keyword.at = tokens.front().at;
-  tokens.insert(tokens.begin(), keyword);
+  keyword.at = tokens.peek().at;
+  tokens.push_front(keyword);
   const std::size_t errors = diagnostics.error_count();
-  PropertyFile given = Parser(std::move(tokens), diagnostics).file();
+  PropertyFile given = Parser(tokens, diagnostics).file();
   if (diagnostics.error_count() != errors) return std::nullopt;
   if (given.declarations.size() != 1 || !given.queries.empty()) {
     diagnostics.error({source, 1, 1},
@@ -834,8 +831,8 @@ ParsedProperties parse_properties(std::string_view text, const std::string& path
                                   const std::vector<std::string>& parameters) {
   ParsedProperties parsed;
   const std::uint32_t file = parsed.sources.add(path);
-  std::vector<Token> tokens = detail::lex_properties(text, file, parsed.diagnostics);
-  parsed.file = Parser(std::move(tokens), parsed.diagnostics).file();
+  detail::TokenStream tokens(text, file, parsed.diagnostics);
+  parsed.file = Parser(tokens, parsed.diagnostics).file();
   if (parsed.ok()) give_parameters(parameters, parsed);
   if (parsed.ok()) detail::check_properties(parsed.file, parsed.diagnostics);
   parsed.diagnostics.sort_by_location();

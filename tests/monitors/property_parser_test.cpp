@@ -185,6 +185,14 @@ TEST(PropertyParser, LongChainsOfOperatorsAreRefusedOrPrintedWithoutExhaustingTh
   EXPECT_EQ(formula_text(sum + " > 0"), sum + " > 0");
 }
 
+TEST(PropertyParser, StopsReadingAFileOfNothingButErrors) {
+  // A regression: 1 MB of NUL bytes gave a million error lines.
+  const ParsedProperties parsed = parse_properties(std::string(1000000, '\0'), "nul.mtl");
+  ASSERT_FALSE(parsed.ok());
+  EXPECT_EQ(parsed.diagnostics.error_count(), 21u);
+  EXPECT_NE(parsed.diagnostics.format(parsed.sources).find("too many errors"), std::string::npos);
+}
+
 TEST(PropertyParser, TakesParametersInEveryWrittenForm) {
   for (const char* given : {"t=5", "t=5,10,20", "t={5,10,20}", "t=0:20:5"}) {
     const ParsedProperties parsed = parse_properties("P=? [ F[0,t] a ]", "p.mtl", {given});
