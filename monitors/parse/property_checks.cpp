@@ -59,25 +59,6 @@ bool is_temporal(const Formula& f) {
   return false;
 }
 
-/// The names of constants and parameters a query may read: in bounds, thresholds, run counts
-/// and predicates.
-void names_in(const Value& v, std::set<std::string>& names) {
-  if (v.is_name()) names.insert(v.name);
-}
-void names_in(const Bound& b, std::set<std::string>& names) {
-  names_in(b.low, names);
-  names_in(b.high, names);
-}
-void names_in(const Expr& e, std::set<std::string>& names) {
-  if (e.kind == Expr::Kind::Name && e.path.find('.') == std::string::npos) names.insert(e.path);
-  for (const auto& operand : e.operands) names_in(*operand, names);
-}
-void names_in(const Formula& f, std::set<std::string>& names) {
-  names_in(f.bound, names);
-  if (f.atom) names_in(*f.atom, names);
-  for (const auto& operand : f.operands) names_in(*operand, names);
-}
-
 class Checker {
  public:
   explicit Checker(bipc::Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
@@ -128,16 +109,7 @@ class Checker {
   // forgotten), not a request.
   void unused_parameters(const PropertyFile& file) {
     std::set<std::string> used;
-    for (const Query& q : file.queries) {
-      names_in(q.run, used);
-      names_in(q.threshold, used);
-      names_in(q.runs, used);
-      names_in(q.other_run, used);
-      if (q.formula) names_in(*q.formula, used);
-      if (q.other) names_in(*q.other, used);
-      if (q.observed) names_in(*q.observed, used);
-      for (const auto& e : q.series) names_in(*e, used);
-    }
+    for (const Query& q : file.queries) used.merge(names_read(q));
     for (const Declaration& d : file.declarations) {
       if (d.kind == Declaration::Kind::Parameter && !used.contains(d.name)) {
         error(d.at, "parameter '" + d.name + "' is not used by any query");

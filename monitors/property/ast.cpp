@@ -246,6 +246,40 @@ std::string to_string(const Query& q) {
   return "";
 }
 
+namespace {
+
+void names_in(const Value& v, std::set<std::string>& names) {
+  if (v.is_name()) names.insert(v.name);
+}
+void names_in(const Bound& b, std::set<std::string>& names) {
+  names_in(b.low, names);
+  names_in(b.high, names);
+}
+void names_in(const Expr& e, std::set<std::string>& names) {
+  if (e.kind == Expr::Kind::Name) names.insert(e.path);
+  for (const auto& operand : e.operands) names_in(*operand, names);
+}
+void names_in(const Formula& f, std::set<std::string>& names) {
+  names_in(f.bound, names);
+  if (f.atom) names_in(*f.atom, names);
+  for (const auto& operand : f.operands) names_in(*operand, names);
+}
+
+}  // namespace
+
+std::set<std::string> names_read(const Query& q) {
+  std::set<std::string> names;
+  names_in(q.run, names);
+  names_in(q.other_run, names);
+  names_in(q.threshold, names);
+  names_in(q.runs, names);
+  if (q.formula) names_in(*q.formula, names);
+  if (q.other) names_in(*q.other, names);
+  if (q.observed) names_in(*q.observed, names);
+  for (const auto& e : q.series) names_in(*e, names);
+  return names;
+}
+
 const char* observation_keyword(Observation observe) {
   switch (observe) {
     case Observation::Max:

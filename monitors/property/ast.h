@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,10 @@ std::string to_string(const Value& value);
 /// `Pr[<=100](phi)`, `Pr[<=100](phi) >= 0.9`, `E[<=100; 50](max: expr)`, `A[] phi`, `E<> phi`.
 std::string to_string(const Query& query);
 std::string to_string(const Declaration& declaration);
+/// The names a query reads, where a constant or parameter may stand: its bounds, threshold,
+/// run count, and the names of its predicates and expressions (dotted paths too).
+std::set<std::string> names_read(const Query& query);
+
 /// The keyword of an observation: `max`, `min`, `last`, `int`, `count`.
 const char* observation_keyword(Observation observe);
 

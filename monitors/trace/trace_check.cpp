@@ -225,32 +225,6 @@ class NameBinder {
   std::unordered_map<const Expr*, TraceName> names_;
 };
 
-/// The names a query reads (of bounds, thresholds and predicates).
-void names_in(const Expr& e, std::set<std::string>& names) {
-  if (e.kind == Expr::Kind::Name) names.insert(e.path);
-  for (const auto& operand : e.operands) names_in(*operand, names);
-}
-void names_in(const Bound& b, std::set<std::string>& names) {
-  for (const Value* v : {&b.low, &b.high}) {
-    if (v->is_name()) names.insert(v->name);
-  }
-}
-void names_in(const Formula& f, std::set<std::string>& names) {
-  names_in(f.bound, names);
-  if (f.atom) names_in(*f.atom, names);
-  for (const auto& operand : f.operands) names_in(*operand, names);
-}
-std::set<std::string> names_in(const Query& q) {
-  std::set<std::string> names;
-  names_in(q.run, names);
-  names_in(q.other_run, names);
-  if (q.formula) names_in(*q.formula, names);
-  if (q.other) names_in(*q.other, names);
-  if (q.observed) names_in(*q.observed, names);
-  for (const auto& e : q.series) names_in(*e, names);
-  return names;
-}
-
 /// Every combination of the values of the parameters `used` names, added to `base`.
 std::vector<Bindings> combinations(const std::map<std::string, std::vector<double>>& parameters,
                                    const std::set<std::string>& used, const Bindings& base) {
@@ -283,7 +257,7 @@ std::optional<std::string> swept_parameter(
     const Query& q, const std::map<std::string, std::vector<double>>& parameters) {
   if (!q.formula || q.run.kind != Bound::Kind::None) return std::nullopt;
   std::optional<std::string> swept;
-  for (const std::string& name : names_in(q)) {
+  for (const std::string& name : names_read(q)) {
     if (!parameters.contains(name)) continue;
     if (swept) return std::nullopt;
     swept = name;
@@ -321,7 +295,7 @@ std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& 
 }
 
 std::vector<Bindings> query_bindings(const PropertyFile& file, const Query& query) {
-  return combinations(parameter_values(file), names_in(query), constant_values(file));
+  return combinations(parameter_values(file), names_read(query), constant_values(file));
 }
 
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
@@ -375,7 +349,7 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
       }
       continue;
     }
-    for (const Bindings& bindings : combinations(parameters, names_in(q), constants)) {
+    for (const Bindings& bindings : combinations(parameters, names_read(q), constants)) {
       Judge& judge = judges.emplace_back();
       judge.result.query = i;
       for (const auto& [name, value] : bindings) {
