@@ -203,6 +203,21 @@ TEST(CompoundConnectors, ArgumentsNameInterfacePorts) {
   EXPECT_TRUE(c->error(line(2), 44, "exports no port")) << c->text();
 }
 
+TEST(CompoundConnectors, ConstantArgumentsAreNamedAsConstants) {
+  auto c = check_compounds(
+      "  const data int K = 1\n"
+      "  compound type T(int n)\n    component A a(1), b(1)\n"
+      "    connector Rdv r(K, n)\n    connector Rdv s(a.p, b.p)\n    connector Rdv u(a, b)\n"
+      "  end\n");
+  EXPECT_TRUE(c->error(line(3), 21, "'K' is a constant data, a connector binds ports"))
+      << c->text();
+  EXPECT_TRUE(c->error(line(3), 24, "'n' is a constant parameter, a connector binds ports"))
+      << c->text();
+  EXPECT_TRUE(c->error(line(5), 21, "expected 'component.port' or 'connector.port', got 'a'"))
+      << c->text();
+  EXPECT_EQ(c->diags.error_count(), 4U) << c->text();
+}
+
 TEST(CompoundConnectors, HierarchicalConnectorsBindExportedPorts) {
   auto c = check_compounds(
       "  compound type K()\n    component A a(1), b(2), d(3)\n"
