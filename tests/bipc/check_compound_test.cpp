@@ -416,6 +416,24 @@ TEST(CompoundExports, UnconnectedPortsAreWarnings) {
   EXPECT_TRUE(c->warning("exported port 'e' of connector 'up' is neither bound")) << c->text();
 }
 
+TEST(CompoundExports, SuppressWarningSilencesUnconnectedPorts) {
+  auto on_elements = check_compounds(
+      "  compound type K()\n    @SuppressWarning(unboundcomponentport)\n    component A a(1)\n"
+      "    @SuppressWarning(unboundcomponentport)\n    component A b(1)\n"
+      "    @SuppressWarning(unboundconnectorport)\n    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_TRUE(on_elements->diags.all().empty()) << on_elements->text();
+  auto on_compound = check_compounds(
+      "  @SuppressWarning(unboundcomponentport, unboundconnectorport)\n  compound type K()\n"
+      "    component A a(1), b(1)\n    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_TRUE(on_compound->diags.all().empty()) << on_compound->text();
+  auto other_name = check_compounds(
+      "  compound type K()\n    @SuppressWarning(nondeterminism)\n    component A a(1), b(1)\n"
+      "    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_EQ(other_name->count("has ports that no connector binds"), 2U) << other_name->text();
+  EXPECT_TRUE(other_name->warning("exported port 'e' of connector 'up' is neither bound"))
+      << other_name->text();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Roots
 

@@ -168,6 +168,18 @@ TEST(CheckConnector, ExportedDataWithoutAnyInteractionIsAWarning) {
       << c.text();
 }
 
+TEST(CheckConnector, SuppressWarningSilencesMissingUp) {
+  const Checked c = check_text(
+      "package t\n  port type V(int v)\n"
+      "  @SuppressWarning(missingup)\n"
+      "  connector type D(V a, V b)\n"
+      "    data int tmp = 4\n"
+      "    export port V ep(tmp)\n"
+      "    define a b\n"
+      "  end\nend\n");
+  EXPECT_TRUE(c.diags.all().empty()) << c.text();
+}
+
 TEST(CheckConnector, ExportedPortBindsConstantsNotVariables) {
   const Checked c = check_text(
       "package t\n  const data int K = 2\n  port type V(int v)\n"
