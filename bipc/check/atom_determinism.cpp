@@ -199,7 +199,8 @@ void check_atom_determinism(const ast::AtomTypeDecl& atom, const ast::Package& p
         warned_with = &all[j];
       }
     }
-    // One diagnostic per transition, the error first, as the Verimag front end reports them.
+    // One diagnostic per transition (an error rather than a warning), as the Verimag front end
+    // reports them.
     if (!failed && warned_with != nullptr && !warnings_off && !suppressed(all[i].annotations)) {
       report(all[i], *warned_with, true, diags);
     }
