@@ -44,9 +44,17 @@ bool same_expression(const Expr& a, const Expr& b) {
       break;
   }
   for (std::size_t i = 0; i < a.operands.size(); ++i) {
+    if (!a.operands[i] || !b.operands[i]) return false;
     if (!same_expression(*a.operands[i], *b.operands[i])) return false;
   }
   return true;
+}
+
+/// Whether `e` has `n` operands, all present (the checker only sees parsed packages, but a
+/// malformed tree must not crash it).
+bool has_operands(const Expr& e, std::size_t n) {
+  return e.operands.size() == n && std::all_of(e.operands.begin(), e.operands.end(),
+                                               [](const ast::ExprPtr& p) { return p != nullptr; });
 }
 
 /// The comparison that holds exactly when `op` does not (x == y against x != y, ...).
@@ -70,7 +78,7 @@ std::optional<BinaryOp> complement(BinaryOp op) {
 }
 
 bool is_not(const Expr& e) {
-  return e.kind == Expr::Kind::Unary && e.unary == ast::UnaryOp::Not && e.operands.size() == 1;
+  return e.kind == Expr::Kind::Unary && e.unary == ast::UnaryOp::Not && has_operands(e, 1);
 }
 
 /// Whether `b` is written as the negation of `a`: `g` and `!(g)`, or complementary comparisons
@@ -79,7 +87,7 @@ bool negates(const Expr& a, const Expr& b) {
   if (is_not(a) && same_expression(*a.operands[0], b)) return true;
   if (is_not(b) && same_expression(*b.operands[0], a)) return true;
   if (a.kind != Expr::Kind::Binary || b.kind != Expr::Kind::Binary) return false;
-  if (a.operands.size() != 2 || b.operands.size() != 2) return false;
+  if (!has_operands(a, 2) || !has_operands(b, 2)) return false;
   const std::optional<BinaryOp> opposite = complement(a.binary);
   return opposite && *opposite == b.binary && same_expression(*a.operands[0], *b.operands[0]) &&
          same_expression(*a.operands[1], *b.operands[1]);
@@ -95,7 +103,7 @@ bool is_literal(const Expr& e) {
 bool equals_different_literals(const Expr& a, const Expr& b) {
   if (a.kind != Expr::Kind::Binary || b.kind != Expr::Kind::Binary) return false;
   if (a.binary != BinaryOp::Eq || b.binary != BinaryOp::Eq) return false;
-  if (a.operands.size() != 2 || b.operands.size() != 2) return false;
+  if (!has_operands(a, 2) || !has_operands(b, 2)) return false;
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const Expr& value_a = *a.operands[1 - i];
@@ -113,7 +121,7 @@ bool equals_different_literals(const Expr& a, const Expr& b) {
 /// that holds whenever it does.
 void add_conjuncts(const Expr& e, std::vector<const Expr*>& out) {
   out.push_back(&e);
-  if (e.kind == Expr::Kind::Binary && e.binary == BinaryOp::And && e.operands.size() == 2) {
+  if (e.kind == Expr::Kind::Binary && e.binary == BinaryOp::And && has_operands(e, 2)) {
     add_conjuncts(*e.operands[0], out);
     add_conjuncts(*e.operands[1], out);
   }
