@@ -14,6 +14,7 @@ list(APPEND BIPC_SOURCES
   check/check_atom.cpp
   check/atom_priorities.cpp
   check/atom_determinism.cpp
+  check/guard_exclusion.cpp
   check/stochastic.cpp
   check/check_connector.cpp
   check/connector_define.cpp

@@ -80,14 +80,29 @@ TEST(CheckDeterminism, GuardedTransitionsAreAWarning) {
   EXPECT_EQ(count(c, Severity::Warning), 2U) << c.text();
 }
 
+TEST(CheckDeterminism, ComparisonsWithoutACommonOrderAreExclusive) {
+  const Checked c =
+      check_text(atom_with("    on p from L to N provided (x == 3)\n"
+                           "    on p from L to M provided (x < 3)\n"
+                           "    on p from L to L provided (3 < x)\n"
+                           "    on q from L to N provided (x > 0 && x < 9 && x != 20)\n"
+                           "    on q from L to M provided (!(x > 0 && x < 9 || x == 20))\n"
+                           "    on q from L to L provided (x == 20)\n"
+                           "    internal from N to L provided (x > 1 && (x < 5 || x == 7))\n"
+                           "    internal from N to M provided (x > 1 && !(x < 5 || x == 7))\n"));
+  EXPECT_TRUE(c.diags.all().empty()) << c.text();
+}
+
 TEST(CheckDeterminism, GuardsThatMayHoldTogetherAreStillAWarning) {
   const Checked c =
       check_text(atom_with("    on p from L to N provided (x == 1)\n"
                            "    on p from L to M provided (x == 1.0)\n"
                            "    on q from L to N provided (x == 1)\n"
-                           "    on q from L to M provided (x + 1 == 2)\n"));
+                           "    on q from L to M provided (x + 1 == 2)\n"
+                           "    internal from N to L provided (x <= 3)\n"
+                           "    internal from N to M provided (3 <= x)\n"));
   EXPECT_TRUE(c.ok) << c.text();
-  EXPECT_EQ(count(c, Severity::Warning), 2U) << c.text();
+  EXPECT_EQ(count(c, Severity::Warning), 3U) << c.text();
 }
 
 TEST(CheckDeterminism, AnUnguardedPairOutranksAGuardedOne) {

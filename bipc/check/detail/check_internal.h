@@ -148,6 +148,12 @@ bool suppresses(const ast::Annotations& annotations, const std::string& warning)
 /// Reports an annotation given twice on one declaration of the package, at the second one.
 void check_annotation_redefinitions(const ast::Package& package, Diagnostics& diags);
 
+/// Whether two (checked) guards can never hold together, as far as their text shows: a conjunct
+/// of one is `!(g)` or `!(... || g || ...)` with every conjunct of `g` among the other's, or two
+/// conjuncts compare the same native operands with no common order (`n < max`, `n == max`), or
+/// equate one expression with two different literals.
+bool guards_exclusive(const ast::Expr& a, const ast::Expr& b);
+
 /// Reports transitions on one port (or internal ones) from nested sets of places: an error when
 /// neither has a guard, a warning otherwise unless the guards are written as each other's
 /// negation or `@SuppressWarning(nondeterminism)` is on the transition, its atom type or package.
