@@ -27,10 +27,22 @@ void Diagnostics::note(Location at, std::string message) {
 }
 
 void Diagnostics::sort_by_location() {
-  std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return std::tie(a.location.file, a.location.line, a.location.column) <
-           std::tie(b.location.file, b.location.line, b.location.column);
+  // A note belongs to the diagnostic before it: groups move together, so that a note pointing at
+  // an earlier line still follows the error it explains.
+  std::vector<std::vector<Diagnostic>> groups;
+  for (Diagnostic& d : items_) {
+    if (d.severity != Severity::Note || groups.empty()) groups.emplace_back();
+    groups.back().push_back(std::move(d));
+  }
+  std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
+    const Location& x = a.front().location;
+    const Location& y = b.front().location;
+    return std::tie(x.file, x.line, x.column) < std::tie(y.file, y.line, y.column);
   });
+  items_.clear();
+  for (std::vector<Diagnostic>& group : groups) {
+    for (Diagnostic& d : group) items_.push_back(std::move(d));
+  }
 }
 
 namespace {

@@ -41,7 +41,8 @@ class Diagnostics {
   bool has_errors() const { return error_count_ > 0; }
   std::size_t error_count() const { return error_count_; }
   const std::vector<Diagnostic>& all() const { return items_; }
-  /// Sorts by file, line, column (stable), so output follows the source.
+  /// Sorts by file, line, column (stable), so output follows the source; notes stay after the
+  /// diagnostic they follow.
   void sort_by_location();
 
   /// `file:line:col: error: message`, one per line.

@@ -11,8 +11,10 @@
 #                                              that contains the text (case-insensitive);
 #                                              without 'L:C:', any stderr line containing
 #                                              'error' and the text
+#   // EXPECT-WARNING: 9:5: non-determinism    the same for '<FILE>:9:5: warning:' (a position
+#                                              is required)
 #   // EXPECT: some text                       stdout contains the text (exact substring)
-# EXPECT-ERROR and EXPECT may repeat; all must hold. The command runs under bash -c (so
+# EXPECT-ERROR, EXPECT-WARNING and EXPECT may repeat; all must hold. The command runs under bash -c (so
 # single quotes group words) with a 60 s timeout.
 #
 # Exit status: 0 when every expectation holds, 1 otherwise (including a malformed header).
@@ -48,6 +50,7 @@ command_line=""
 command_count=0
 expected_exit=""
 expect_errors=()
+expect_warnings=()
 expect_outputs=()
 
 while IFS= read -r line || [[ -n $line ]]; do
@@ -68,6 +71,11 @@ while IFS= read -r line || [[ -n $line ]]; do
     expect_errors+=("${BASH_REMATCH[1]}")
   elif [[ $line =~ ^//[[:space:]]*EXPECT-ERROR: ]]; then
     echo "FAIL $file: empty EXPECT-ERROR line"
+    exit 1
+  elif [[ $line =~ ^//[[:space:]]*EXPECT-WARNING:[[:space:]]*([0-9]+):([0-9]+):[[:space:]]*(.*[^[:space:]])[[:space:]]*$ ]]; then
+    expect_warnings+=("${BASH_REMATCH[1]}:${BASH_REMATCH[2]}:${BASH_REMATCH[3]}")
+  elif [[ $line =~ ^//[[:space:]]*EXPECT-WARNING: ]]; then
+    echo "FAIL $file: EXPECT-WARNING needs 'LINE:COL: text': $line"
     exit 1
   elif [[ $line =~ ^//[[:space:]]*EXPECT:[[:space:]]?(.*)$ ]]; then
     expect_outputs+=("${BASH_REMATCH[1]}")
@@ -120,11 +128,11 @@ fi
 
 lowercase() { printf '%s' "${1,,}"; }
 
-# Succeeds when stderr has '<path>:L:C: error:' (path naming FILE) followed by the phrase.
-has_positioned_error() {
-  local wanted_line=$1 wanted_col=$2 phrase
-  phrase=$(lowercase "$3")
-  local marker=":$wanted_line:$wanted_col: error:" line prefix rest
+# Succeeds when stderr has '<path>:L:C: SEVERITY:' (path naming FILE) followed by the phrase.
+has_positioned() {
+  local severity=$1 wanted_line=$2 wanted_col=$3 phrase
+  phrase=$(lowercase "$4")
+  local marker=":$wanted_line:$wanted_col: $severity:" line prefix rest
   while IFS= read -r line || [[ -n $line ]]; do
     [[ $line == *"$marker"* ]] || continue
     prefix=${line%%"$marker"*}
@@ -149,11 +157,18 @@ has_unpositioned_error() {
 
 for expectation in "${expect_errors[@]+"${expect_errors[@]}"}"; do
   if [[ $expectation =~ ^([0-9]+):([0-9]+):[[:space:]]*(.*)$ ]]; then
-    if ! has_positioned_error "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "${BASH_REMATCH[3]}"; then
+    if ! has_positioned error "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "${BASH_REMATCH[3]}"; then
       failures+=("stderr lacks: $file_base:${BASH_REMATCH[1]}:${BASH_REMATCH[2]}: error: ...${BASH_REMATCH[3]}...")
     fi
   elif ! has_unpositioned_error "$expectation"; then
     failures+=("stderr lacks an error line containing: $expectation")
+  fi
+done
+
+for expectation in "${expect_warnings[@]+"${expect_warnings[@]}"}"; do
+  [[ $expectation =~ ^([0-9]+):([0-9]+):(.*)$ ]]
+  if ! has_positioned warning "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}" "${BASH_REMATCH[3]}"; then
+    failures+=("stderr lacks: $file_base:${BASH_REMATCH[1]}:${BASH_REMATCH[2]}: warning: ...${BASH_REMATCH[3]}...")
   fi
 done
 
@@ -184,6 +199,9 @@ echo "--- expected"
 echo "- exit $expected_exit"
 for expectation in "${expect_errors[@]+"${expect_errors[@]}"}"; do
   echo "- stderr: $expectation"
+done
+for expectation in "${expect_warnings[@]+"${expect_warnings[@]}"}"; do
+  echo "- stderr warning: $expectation"
 done
 for expectation in "${expect_outputs[@]+"${expect_outputs[@]}"}"; do
   echo "- stdout: $expectation"

@@ -32,6 +32,7 @@ void declare_package_names(const ast::Package& package, Diagnostics& diags) {
 
 void check_package(ast::Package& package, const Symbols& symbols, Diagnostics& diags) {
   declare_package_names(package, diags);
+  check_annotation_redefinitions(package, diags);
   check_package_declarations(package, symbols, diags);
   for (ast::PortTypeDecl& type : package.port_types) {
     check_port_type(type, package, symbols, diags);

@@ -41,24 +41,40 @@ void check_params(ast::AtomTypeDecl& atom, const ast::Package& package, const Sy
   }
 }
 
-/// One bound name of a port: it must be data of the atom, of exactly the parameter's type.
+/// What kind of constant `name` denotes in the atom ("data", "parameter"), or "" for none:
+/// constant data of the atom, its parameters and the package constants.
+std::string constant_kind(const std::string& name, const ast::AtomTypeDecl& atom,
+                          const ast::Package& package, const Symbols& symbols) {
+  if (const int d = index_of(atom.data, name); d >= 0) {
+    return atom.data[d].type.is_const ? "data" : "";
+  }
+  if (index_of(atom.params, name) >= 0) return "parameter";
+  if (symbols.constant(package, ast::QualifiedName{{ast::Ident{name, {}}}}) != nullptr) {
+    return "data";
+  }
+  return "";
+}
+
+/// One bound name of a port: it must be variable data of the atom, of exactly the parameter's
+/// type.
 int bind_data(const ast::PortDecl& port, const ast::Ident& bound, std::size_t k,
-              const ast::AtomTypeDecl& atom, Diagnostics& diags) {
-  const int d = index_of(atom.data, bound.text);
-  if (d < 0) {
-    const std::string what = index_of(atom.params, bound.text) >= 0   ? "parameter"
-                             : index_of(atom.clocks, bound.text) >= 0 ? "clock"
-                                                                      : "";
-    if (what.empty()) {
-      diags.error(bound.loc,
-                  "undeclared data '" + bound.text + "' bound by port '" + port.name.text + "'");
-    } else {
-      diags.error(bound.loc, "port '" + port.name.text + "' cannot bind " + what + " '" +
-                                 bound.text + "': only data can be bound");
-    }
+              const ast::AtomTypeDecl& atom, const ast::Package& package, const Symbols& symbols,
+              Diagnostics& diags) {
+  if (const std::string kind = constant_kind(bound.text, atom, package, symbols); !kind.empty()) {
+    report_bound_constant(bound, kind, "a port", diags);
     return -1;
   }
-  check_bound_type("port", port.name, port.port_type, k, bound, atom.data[d].type.resolved, diags);
+  const int d = index_of(atom.data, bound.text);
+  if (d >= 0) {
+    check_bound_type("port", port.name, port.port_type, k, bound, atom.data[d].type.resolved,
+                     diags);
+  } else if (index_of(atom.clocks, bound.text) >= 0) {
+    diags.error(bound.loc, "port '" + port.name.text + "' cannot bind clock '" + bound.text +
+                               "': only data can be bound");
+  } else {
+    diags.error(bound.loc,
+                "undeclared data '" + bound.text + "' bound by port '" + port.name.text + "'");
+  }
   return d;
 }
 
@@ -68,7 +84,8 @@ void check_port(ast::PortDecl& port, const ast::AtomTypeDecl& atom, const ast::P
   check_bound_count("port", port.name, port.type, port.port_type, port.bound_data.size(), diags);
   port.bound_data_index.clear();
   for (std::size_t k = 0; k < port.bound_data.size(); ++k) {
-    port.bound_data_index.push_back(bind_data(port, port.bound_data[k], k, atom, diags));
+    port.bound_data_index.push_back(
+        bind_data(port, port.bound_data[k], k, atom, package, symbols, diags));
   }
   check_stochastic(port, atom, diags);
 }
@@ -162,6 +179,7 @@ void check_atom_type(ast::AtomTypeDecl& type, const ast::Package& package, const
   for (ast::PortDecl& port : type.ports) check_port(port, type, package, symbols, diags);
   check_initial(type, ctx, symbols, diags);
   for (ast::Transition& t : type.transitions) check_transition(t, type, ctx, symbols, diags);
+  check_atom_determinism(type, package, diags);
   check_atom_priorities(type, ctx, symbols, diags);
   for (ast::InvariantDecl& invariant : type.invariants) {
     check_invariant(invariant, type, ctx, symbols, diags);

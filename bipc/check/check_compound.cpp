@@ -5,6 +5,8 @@
 #include <set>
 #include <tuple>
 
+#include "bipc/check/detail/check_internal.h"
+
 namespace smcbip::bipc::detail {
 
 namespace {
@@ -201,12 +203,29 @@ void check_arguments(std::vector<ast::ExprPtr>& args, const std::vector<ast::Par
   }
 }
 
+namespace {
+
+/// A connector argument that is not `x.p`: a constant written where a port goes gets its own
+/// message, since a reader would otherwise look for a missing declaration.
+void report_malformed_port_ref(const ast::QualifiedName& name, const CompoundScope& scope) {
+  std::string kind;
+  if (name.parts.size() == 1 && index_of(scope.type.params, name.text()) >= 0) {
+    kind = "parameter";
+  } else if (name.parts.size() == 1 && scope.symbols.constant(scope.package, name) != nullptr) {
+    kind = "data";
+  }
+  scope.diags.error(name.loc(),
+                    kind.empty()
+                        ? "expected 'component.port' or 'connector.port', got '" + name.text() + "'"
+                        : "'" + name.text() + "' is a constant " + kind +
+                              ", a connector binds ports ('component.port')");
+}
+
+}  // namespace
+
 PortRef resolve_port_ref(const ast::QualifiedName& name, const CompoundScope& scope, bool report) {
   if (name.parts.size() != 2) {
-    if (report && !name.parts.empty()) {
-      scope.diags.error(name.loc(),
-                        "expected 'component.port' or 'connector.port', got '" + name.text() + "'");
-    }
+    if (report && !name.parts.empty()) report_malformed_port_ref(name, scope);
     return {};
   }
   const ast::Ident& owner = name.parts[0];

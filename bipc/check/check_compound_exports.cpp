@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "bipc/check/detail/check_compound.h"
+#include "bipc/check/detail/check_internal.h"
 
 namespace smcbip::bipc::detail {
 
@@ -105,11 +106,17 @@ void check_compound_exports(CompoundScope& scope) {
   declare_exports(scope.type, scope.diags);
 }
 
-// Verimag warns about these too: whatever depends on such a port can never happen.
+// Verimag warns about these too: whatever depends on such a port can never happen. A model that
+// means it (the ends of a chain) says so with @SuppressWarning on the element or a container.
 void warn_unconnected(const CompoundScope& scope) {
+  auto silenced = [&scope](const ast::Annotations& element, const std::string& warning) {
+    return suppresses(element, warning) || suppresses(scope.type.annotations, warning) ||
+           suppresses(scope.package.annotations, warning);
+  };
   const auto used_components = used_ports(scope, PortRef::Owner::Component);
   for (std::size_t c = 0; c < scope.interfaces.size(); ++c) {
     if (!scope.interfaces[c]) continue;
+    if (silenced(scope.type.components[c].annotations, "unboundcomponentport")) continue;
     std::string unused;
     for (const ComponentInterface::PortEntry& port : scope.interfaces[c]->ports) {
       if (used_components.count({static_cast<int>(c), port.name})) continue;
@@ -124,6 +131,7 @@ void warn_unconnected(const CompoundScope& scope) {
   for (std::size_t k = 0; k < scope.type.connectors.size(); ++k) {
     const ast::ConnectorDecl& connector = scope.type.connectors[k];
     if (connector.connector_type == nullptr || !connector.connector_type->export_port) continue;
+    if (silenced(connector.annotations, "unboundconnectorport")) continue;
     const std::string& port = connector.connector_type->export_port->name.text;
     if (used_connectors.count({static_cast<int>(k), port})) continue;
     scope.diags.warning(connector.name.loc, "the exported port '" + port + "' of connector '" +

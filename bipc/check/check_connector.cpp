@@ -38,16 +38,19 @@ void check_export_port(ast::ConnectorTypeDecl& connector, const ast::Package& pa
   for (std::size_t k = 0; k < port.bound_data.size(); ++k) {
     const ast::Ident& bound = port.bound_data[k];
     const int d = index_of(connector.data, bound.text);
-    port.bound_data_index.push_back(d);
-    if (d < 0) {
+    const bool constant = d >= 0
+                              ? connector.data[d].type.is_const
+                              : symbols.constant(package, ast::QualifiedName{{bound}}) != nullptr;
+    port.bound_data_index.push_back(constant ? -1 : d);
+    if (constant) {
+      report_bound_constant(bound, "data", "an exported port", diags);
+    } else if (d < 0) {
       diags.error(bound.loc, "undeclared connector data '" + bound.text +
-                                 "' bound by exported "
-                                 "port '" +
-                                 port.name.text + "'");
-      continue;
+                                 "' bound by exported port '" + port.name.text + "'");
+    } else {
+      check_bound_type("exported port", port.name, port.port_type, k, bound,
+                       connector.data[d].type.resolved, diags);
     }
-    check_bound_type("exported port", port.name, port.port_type, k, bound,
-                     connector.data[d].type.resolved, diags);
   }
 }
 
@@ -128,16 +131,24 @@ void check_interactions(ast::ConnectorTypeDecl& connector, const ExprContext& ct
   }
 }
 
-/// Data exported through the port are computed by `up`: some interaction must have one.
-void check_up_exists(const ast::ConnectorTypeDecl& connector, Diagnostics& diags) {
+/// Data exported through the port are computed by `up`. Without any, the port offers the data's
+/// initial values: legal, though rarely meant, so a warning as in the Verimag front end.
+void check_up_exists(const ast::ConnectorTypeDecl& connector, const ast::Package& package,
+                     Diagnostics& diags) {
   if (!connector.export_port || connector.export_port->bound_data.empty()) return;
+  if (suppresses(connector.annotations, "missingup") ||
+      suppresses(package.annotations, "missingup")) {
+    return;
+  }
   for (const ast::InteractionDecl& interaction : connector.interactions) {
     if (interaction.has_up) return;
   }
   const ast::ConnectorExportPort& port = *connector.export_port;
-  diags.error(port.name.loc, "exported port '" + port.name.text +
-                                 "' binds data but no interaction computes it in 'up': its data "
-                                 "would never be computed");
+  diags.warning(port.name.loc, "exported port '" + port.name.text +
+                                   "' binds data that no interaction computes: no interaction of "
+                                   "connector type '" +
+                                   connector.name.text +
+                                   "' has an 'up', so the port offers the data's initial values");
 }
 
 }  // namespace
@@ -154,7 +165,7 @@ void check_connector_type(ast::ConnectorTypeDecl& type, const ast::Package& pack
   check_export_port(type, package, symbols, diags);
   check_define(type, diags);
   check_interactions(type, ctx, symbols, diags);
-  check_up_exists(type, diags);
+  check_up_exists(type, package, diags);
 }
 
 }  // namespace smcbip::bipc::detail

@@ -51,6 +51,12 @@ void check_bound_count(const std::string& what, const ast::Ident& port,
                             " data, got " + std::to_string(bound_count));
 }
 
+void report_bound_constant(const ast::Ident& bound, const std::string& kind,
+                           const std::string& binder, Diagnostics& diags) {
+  diags.error(bound.loc, "'" + bound.text + "' is a constant " + kind + ", " + binder +
+                             " can only bind variables");
+}
+
 void check_bound_type(const std::string& what, const ast::Ident& port,
                       const ast::PortTypeDecl* port_type, std::size_t k, const ast::Ident& bound,
                       const ast::ValueType& actual, Diagnostics& diags) {

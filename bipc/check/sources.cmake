@@ -9,9 +9,12 @@ list(APPEND BIPC_SOURCES
   check/calls.cpp
   check/statements.cpp
   check/declarations.cpp
+  check/annotations.cpp
   check/check_package.cpp
   check/check_atom.cpp
   check/atom_priorities.cpp
+  check/atom_determinism.cpp
+  check/guard_exclusion.cpp
   check/stochastic.cpp
   check/check_connector.cpp
   check/connector_define.cpp

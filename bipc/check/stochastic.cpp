@@ -154,17 +154,11 @@ void check_annotation(const ast::Annotation& annotation, const ast::AtomTypeDecl
 
 void check_stochastic(const ast::PortDecl& port, const ast::AtomTypeDecl& atom,
                       Diagnostics& diags) {
-  const ast::Annotation* first = nullptr;
+  // A second @stochastic is reported as a redefined annotation; only the first one counts.
   for (const ast::Annotation& annotation : port.annotations) {
     if (annotation.name.text != "stochastic") continue;
-    if (first != nullptr) {
-      diags.error(annotation.loc,
-                  "port '" + port.name.text + "' has more than one @stochastic annotation");
-      diags.note(first->loc, "the first one is here");
-      continue;
-    }
-    first = &annotation;
     check_annotation(annotation, atom, diags);
+    return;
   }
 }
 

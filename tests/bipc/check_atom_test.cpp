@@ -81,12 +81,34 @@ TEST(CheckAtom, PortBindings) {
       "    initial to L\n"
       "  end\nend\n");
   EXPECT_TRUE(c.has(7, 12, "port 'a' of type 'V' expects 2 data, got 1")) << c.text();
-  EXPECT_TRUE(c.has(8, 14, "port 'b' cannot bind parameter 'k': only data can be bound"))
+  EXPECT_TRUE(c.has(8, 14, "'k' is a constant parameter, a port can only bind variables"))
       << c.text();
   EXPECT_TRUE(c.has(9, 17, "binds 'm' of type int to parameter 'w' of type float")) << c.text();
   EXPECT_TRUE(c.has(10, 17, "port 'd' cannot bind clock 'x'")) << c.text();
   EXPECT_TRUE(c.has(11, 10, "unknown port type 'W'")) << c.text();
   EXPECT_EQ(c.diags.error_count(), 6U) << c.text();  // b's 'm' is also of the wrong type
+}
+
+TEST(CheckAtom, PortBindsConstantsNotVariables) {
+  const Checked c = check_text(
+      "package t\n"
+      "  const data int LIMIT = 3\n"
+      "  port type V(int v)\n"
+      "  atom type A(int k)\n"
+      "    data const int fixed = 1\n"
+      "    data int n\n"
+      "    export port V a(LIMIT), b(fixed), c(k), d(n), e(missing)\n"
+      "    place L\n"
+      "    initial to L\n"
+      "  end\nend\n");
+  EXPECT_TRUE(c.has(7, 21, "'LIMIT' is a constant data, a port can only bind variables"))
+      << c.text();
+  EXPECT_TRUE(c.has(7, 31, "'fixed' is a constant data, a port can only bind variables"))
+      << c.text();
+  EXPECT_TRUE(c.has(7, 41, "'k' is a constant parameter, a port can only bind variables"))
+      << c.text();
+  EXPECT_TRUE(c.has(7, 53, "undeclared data 'missing' bound by port 'e'")) << c.text();
+  EXPECT_EQ(c.diags.error_count(), 4U) << c.text();
 }
 
 TEST(CheckAtom, PetriNetReferences) {
@@ -159,7 +181,7 @@ TEST(CheckAtom, StochasticAnnotation) {
   EXPECT_TRUE(c.has(13, 46, "'b' has type bool: expected int or float")) << c.text();
   EXPECT_TRUE(c.has(13, 46, "'zz' must be a number or the name of a parameter or data"))
       << c.text();
-  EXPECT_TRUE(c.has(16, 5, "more than one @stochastic")) << c.text();
+  EXPECT_TRUE(c.has(16, 5, "annotation '@stochastic' is redefined on port 'twice'")) << c.text();
   EXPECT_EQ(c.diags.error_count(), 6U) << c.text();
 }
 

@@ -203,6 +203,21 @@ TEST(CompoundConnectors, ArgumentsNameInterfacePorts) {
   EXPECT_TRUE(c->error(line(2), 44, "exports no port")) << c->text();
 }
 
+TEST(CompoundConnectors, ConstantArgumentsAreNamedAsConstants) {
+  auto c = check_compounds(
+      "  const data int K = 1\n"
+      "  compound type T(int n)\n    component A a(1), b(1)\n"
+      "    connector Rdv r(K, n)\n    connector Rdv s(a.p, b.p)\n    connector Rdv u(a, b)\n"
+      "  end\n");
+  EXPECT_TRUE(c->error(line(3), 21, "'K' is a constant data, a connector binds ports"))
+      << c->text();
+  EXPECT_TRUE(c->error(line(3), 24, "'n' is a constant parameter, a connector binds ports"))
+      << c->text();
+  EXPECT_TRUE(c->error(line(5), 21, "expected 'component.port' or 'connector.port', got 'a'"))
+      << c->text();
+  EXPECT_EQ(c->diags.error_count(), 4U) << c->text();
+}
+
 TEST(CompoundConnectors, HierarchicalConnectorsBindExportedPorts) {
   auto c = check_compounds(
       "  compound type K()\n    component A a(1), b(2), d(3)\n"
@@ -399,6 +414,24 @@ TEST(CompoundExports, UnconnectedPortsAreWarnings) {
                  "'r'"))
       << c->text();
   EXPECT_TRUE(c->warning("exported port 'e' of connector 'up' is neither bound")) << c->text();
+}
+
+TEST(CompoundExports, SuppressWarningSilencesUnconnectedPorts) {
+  auto on_elements = check_compounds(
+      "  compound type K()\n    @SuppressWarning(unboundcomponentport)\n    component A a(1)\n"
+      "    @SuppressWarning(unboundcomponentport)\n    component A b(1)\n"
+      "    @SuppressWarning(unboundconnectorport)\n    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_TRUE(on_elements->diags.all().empty()) << on_elements->text();
+  auto on_compound = check_compounds(
+      "  @SuppressWarning(unboundcomponentport, unboundconnectorport)\n  compound type K()\n"
+      "    component A a(1), b(1)\n    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_TRUE(on_compound->diags.all().empty()) << on_compound->text();
+  auto other_name = check_compounds(
+      "  compound type K()\n    @SuppressWarning(nondeterminism)\n    component A a(1), b(1)\n"
+      "    connector Up up(a.p, b.p)\n  end\n");
+  EXPECT_EQ(other_name->count("has ports that no connector binds"), 2U) << other_name->text();
+  EXPECT_TRUE(other_name->warning("exported port 'e' of connector 'up' is neither bound"))
+      << other_name->text();
 }
 
 // ---------------------------------------------------------------------------------------------

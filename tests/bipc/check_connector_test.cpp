@@ -147,8 +147,57 @@ TEST(CheckConnector, UpNeedsAnExportedPortAndExportedDataNeedsUp) {
       "    on a b down { b.v = 1; }\n"
       "  end\nend\n");
   EXPECT_TRUE(c.has(6, 12, "'up' needs an exported port")) << c.text();
-  EXPECT_TRUE(c.has(10, 19, "exported port 'ep' binds data but no interaction computes it in 'up'"))
+  // Data no interaction computes keep their initial values: legal, so only a warning.
+  EXPECT_TRUE(c.has(Severity::Warning, 10, 19,
+                    "exported port 'ep' binds data that no interaction computes: no interaction "
+                    "of connector type 'D' has an 'up'"))
       << c.text();
+  EXPECT_EQ(c.diags.error_count(), 1U) << c.text();
+}
+
+TEST(CheckConnector, ExportedDataWithoutAnyInteractionIsAWarning) {
+  const Checked c = check_text(
+      "package t\n  port type V(int v)\n"
+      "  connector type D(V a, V b)\n"
+      "    data int tmp = 4\n"
+      "    export port V ep(tmp)\n"
+      "    define a b\n"
+      "  end\nend\n");
+  EXPECT_TRUE(c.ok) << c.text();
+  EXPECT_TRUE(c.has(Severity::Warning, 5, 19, "binds data that no interaction computes"))
+      << c.text();
+}
+
+TEST(CheckConnector, SuppressWarningSilencesMissingUp) {
+  const Checked c = check_text(
+      "package t\n  port type V(int v)\n"
+      "  @SuppressWarning(missingup)\n"
+      "  connector type D(V a, V b)\n"
+      "    data int tmp = 4\n"
+      "    export port V ep(tmp)\n"
+      "    define a b\n"
+      "  end\nend\n");
+  EXPECT_TRUE(c.diags.all().empty()) << c.text();
+}
+
+TEST(CheckConnector, ExportedPortBindsConstantsNotVariables) {
+  const Checked c = check_text(
+      "package t\n  const data int K = 2\n  port type V(int v)\n"
+      "  connector type C(V a)\n"
+      "    data const int fixed = 1\n"
+      "    export port V ep(K)\n"
+      "    define a\n"
+      "  end\n"
+      "  connector type D(V a)\n"
+      "    data const int fixed = 1\n"
+      "    export port V ep(fixed)\n"
+      "    define a\n"
+      "  end\nend\n");
+  EXPECT_TRUE(c.has(6, 22, "'K' is a constant data, an exported port can only bind variables"))
+      << c.text();
+  EXPECT_TRUE(c.has(11, 22, "'fixed' is a constant data, an exported port can only bind variables"))
+      << c.text();
+  EXPECT_EQ(c.diags.error_count(), 2U) << c.text();
 }
 
 TEST(CheckConnector, ExportPortBinding) {

@@ -148,6 +148,33 @@ TEST(CheckPackage, ComponentInterfaces) {
   EXPECT_EQ(compound.data[0].type.kind, ast::ValueType::Kind::Int);
 }
 
+TEST(CheckPackage, RedefinedAnnotationIsAnError) {
+  const Checked c = check_text(
+      "@cpp(src=\"a.cpp\") @cpp(src=\"b.cpp\")\n"
+      "package t\n"
+      "  @doc @doc(text=\"again\")\n"
+      "  port type P()\n"
+      "  atom type A()\n"
+      "    @trace(level=high) @fault @trace\n"
+      "    export port P p(), q()\n"
+      "    place L\n"
+      "    initial to L\n"
+      "    @a @b @a\n"
+      "    on p from L to L\n"
+      "  end\n"
+      "  @doc @text @note\n"
+      "  connector type C(P a)\n    define a\n  end\n"
+      "end\n");
+  EXPECT_TRUE(c.has(1, 19, "annotation '@cpp' is redefined on package 't'")) << c.text();
+  EXPECT_TRUE(c.has(3, 8, "annotation '@doc' is redefined on port type 'P'")) << c.text();
+  EXPECT_TRUE(c.has(Severity::Note, 3, 3, "it is first given here")) << c.text();
+  // The ports of one declaration share its annotations: one error, not one per port.
+  EXPECT_TRUE(c.has(6, 31, "annotation '@trace' is redefined on port 'p'")) << c.text();
+  EXPECT_TRUE(c.has(10, 11, "annotation '@a' is redefined on a transition of atom type 'A'"))
+      << c.text();
+  EXPECT_EQ(c.diags.error_count(), 4U) << c.text();
+}
+
 /// Checks every model of a corpus; returns the files with errors.
 std::vector<std::string> rejected_in(const std::filesystem::path& dir) {
   std::vector<std::string> rejected;

@@ -193,6 +193,22 @@ TEST(ParseErrors, ErrorCountIsBounded) {
   EXPECT_EQ(binary.error_count(), 50u);
 }
 
+// A note pointing at an earlier line (the first of two clashing declarations) used to be sorted
+// away from the error it explains.
+TEST(ParseErrors, SortingKeepsNotesAfterTheirDiagnostic) {
+  Diagnostics diags;
+  diags.error({0, 9, 5}, "second");
+  diags.note({0, 2, 5}, "first is here");
+  diags.warning({0, 4, 1}, "middle");
+  diags.note({0, 1, 1}, "the middle's note");
+  diags.sort_by_location();
+  ASSERT_EQ(diags.all().size(), 4u);
+  EXPECT_EQ(diags.all()[0].message, "middle");
+  EXPECT_EQ(diags.all()[1].message, "the middle's note");
+  EXPECT_EQ(diags.all()[2].message, "second");
+  EXPECT_EQ(diags.all()[3].message, "first is here");
+}
+
 TEST(ParseErrors, DeepNestingIsReportedNotCrashed) {
   const std::string parens(10000, '(');
   std::vector<std::string> errors = errors_of("package p const data int K = " + parens + "1 end");

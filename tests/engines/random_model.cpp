@@ -41,6 +41,16 @@ std::string Generator::package(const std::string& name) {
   return out.str();
 }
 
+namespace {
+
+/// Ports left unbound are never offered, which the models mean: the annotation keeps the front
+/// end from warning about them (the Verimag front end's name for that warning).
+const char* unbound_ports_allowed(bool leaves_unbound) {
+  return leaves_unbound ? "  @SuppressWarning(unboundcomponentport)\n" : "";
+}
+
+}  // namespace
+
 SubType Generator::make_sub_type(int index) {
   SubType sub;
   sub.name = "S" + std::to_string(index);
@@ -52,8 +62,13 @@ SubType Generator::make_sub_type(int index) {
   }
   add_priorities(scope);
   int exported = 0;
+  bool leaves_unbound = false;
   for (Offer& offer : scope.offers) {
-    if (offer.used || !(offer.must_bind || chance(75))) continue;
+    if (offer.used) continue;
+    if (!(offer.must_bind || chance(75))) {
+      leaves_unbound = true;
+      continue;
+    }
     const std::string as = "x" + std::to_string(exported++);
     scope.body << "    export port " << offer.ref << " as " << as << "\n";
     sub.exports.push_back(
@@ -71,7 +86,8 @@ SubType Generator::make_sub_type(int index) {
     scope.body << "    export data " << b << " as " << as << "\n";
     sub.data_bools.push_back(as);
   }
-  compounds_ << "  compound type " << sub.name << "()\n" << scope.body.str() << "  end\n\n";
+  compounds_ << unbound_ports_allowed(leaves_unbound) << "  compound type " << sub.name << "()\n"
+             << scope.body.str() << "  end\n\n";
   return sub;
 }
 
@@ -96,7 +112,10 @@ void Generator::make_root(const std::vector<SubType>& subs, int sub_instances, i
   }
   bind_pending(scope);
   add_priorities(scope);
-  compounds_ << "  compound type Root()\n" << scope.body.str() << "  end\n";
+  const bool leaves_unbound = std::any_of(scope.offers.begin(), scope.offers.end(),
+                                          [](const Offer& offer) { return !offer.used; });
+  compounds_ << unbound_ports_allowed(leaves_unbound) << "  compound type Root()\n"
+             << scope.body.str() << "  end\n";
 }
 
 }  // namespace random_model_detail

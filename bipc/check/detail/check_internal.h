@@ -119,6 +119,11 @@ void check_bound_count(const std::string& what, const ast::Ident& port,
                        const ast::QualifiedName& type, const ast::PortTypeDecl* port_type,
                        std::size_t bound_count, Diagnostics& diags);
 
+/// Reports a constant (`kind`: "data" or "parameter") bound by `binder` ("a port", "an exported
+/// port"), which binds variables only since connectors write the data they are given.
+void report_bound_constant(const ast::Ident& bound, const std::string& kind,
+                           const std::string& binder, Diagnostics& diags);
+
 /// The `k`-th data bound by such a port, `bound` of type `actual`, must have exactly the type of
 /// the port type's `k`-th parameter (not checked when either is unknown).
 void check_bound_type(const std::string& what, const ast::Ident& port,
@@ -134,6 +139,26 @@ void check_stochastic(const ast::PortDecl& port, const ast::AtomTypeDecl& atom, 
 /// ones.
 void check_atom_priorities(ast::AtomTypeDecl& atom, const ExprContext& ctx, const Symbols& symbols,
                            Diagnostics& diags);
+
+/// Whether `@SuppressWarning(...)` among `annotations` names `warning` (the Verimag front end's
+/// names: "nondeterminism", "unboundcomponentport", "unboundconnectorport", "missingup"); it
+/// silences that warning on the annotated element and everything inside it.
+bool suppresses(const ast::Annotations& annotations, const std::string& warning);
+
+/// Reports an annotation given twice on one declaration of the package, at the second one.
+void check_annotation_redefinitions(const ast::Package& package, Diagnostics& diags);
+
+/// Whether two (checked) guards can never hold together, as far as their text shows: a conjunct
+/// of one is `!(g)` or `!(... || g || ...)` with every conjunct of `g` among the other's, or two
+/// conjuncts compare the same native operands with no common order (`n < max`, `n == max`), or
+/// equate one expression with two different literals.
+bool guards_exclusive(const ast::Expr& a, const ast::Expr& b);
+
+/// Reports transitions on one port (or internal ones) from nested sets of places: an error when
+/// neither has a guard, a warning otherwise unless the guards are written as each other's
+/// negation or `@SuppressWarning(nondeterminism)` is on the transition, its atom type or package.
+void check_atom_determinism(const ast::AtomTypeDecl& atom, const ast::Package& package,
+                            Diagnostics& diags);
 
 /// Checks a connector's define expression: leaves are port parameters, each once, all present.
 void check_define(ast::ConnectorTypeDecl& connector, Diagnostics& diags);
