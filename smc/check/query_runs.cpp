@@ -20,6 +20,36 @@ class NullBuffer final : public std::streambuf {
 
 }  // namespace
 
+/// A string that stops growing at kMaxSavedTraceBytes: past it, the stream writing to it
+/// fails and writes nothing more.
+class QueryRuns::CappedText final : public std::streambuf {
+ public:
+  void clear() {
+    text_.clear();
+    cut_ = false;
+  }
+  const std::string& text() const { return text_; }
+  bool cut() const { return cut_; }
+
+ protected:
+  int overflow(int c) override {
+    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+    const char byte = traits_type::to_char_type(c);
+    return xsputn(&byte, 1) == 1 ? c : traits_type::eof();
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    const std::size_t room = kMaxSavedTraceBytes - text_.size();
+    const auto taken = static_cast<std::size_t>(n) <= room ? static_cast<std::size_t>(n) : room;
+    text_.append(s, taken);
+    if (taken < static_cast<std::size_t>(n)) cut_ = true;
+    return static_cast<std::streamsize>(taken);
+  }
+
+ private:
+  std::string text_;
+  bool cut_ = false;
+};
+
 /// Passes each step to the observers of the points still judged, until all have decided.
 class QueryRuns::Observer final : public engines::RunObserver {
  public:
@@ -34,15 +64,50 @@ class QueryRuns::Observer final : public engines::RunObserver {
   }
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
+    end_ = end;
     failure_ = end == engines::RunEnd::Error ? message : std::string();
     for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 
+  engines::RunEnd end() const { return end_; }
   const std::string& failure() const { return failure_; }
 
  private:
+  engines::RunEnd end_ = engines::RunEnd::Stopped;
   std::string failure_;
   std::vector<engines::RunObserver*> observers_, watching_;
+};
+
+/// An expectation's observed extremum, and whether the run reached the query's run bound: a run
+/// cut before it (a step limit, a time-lock, an error) leaves the value undecided, as it leaves
+/// a formula undecided; a deadlock keeps its last state up to the bound.
+class QueryRuns::ExtremumWatch final : public engines::RunObserver {
+ public:
+  ExtremumWatch(const monitors::Query& q, const monitors::TimeScale& scale,
+                const monitors::Bindings& bindings)
+      : extremum_(q, scale, bindings) {}
+
+  void reset() {
+    extremum_.reset();
+    complete_ = false;
+  }
+  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
+    if (extremum_.observe(step, state)) return true;
+    complete_ = true;  // past the run bound
+    return false;
+  }
+  void finish(engines::RunEnd end, int, const std::string&) override {
+    if (end == engines::RunEnd::Deadlock) complete_ = true;
+  }
+
+  /// The run's value, or nullopt when the run did not reach the bound or observed nothing.
+  std::optional<double> value() const {
+    return complete_ ? extremum_.value() : std::optional<double>();
+  }
+
+ private:
+  monitors::RunExtremum extremum_;
+  bool complete_ = false;
 };
 
 QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry* compiled,
@@ -52,7 +117,9 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       observer_(std::make_unique<Observer>()),
       nothing_(std::make_unique<NullBuffer>()),
       sink_(nothing_.get()),
-      traced_(!options.silent) {
+      traced_(!options.silent),
+      trace_text_(std::make_unique<CappedText>()),
+      trace_(trace_text_.get()) {
   if (compiled) {
     compiled->register_externs(externs_);
     simulator_ = std::make_unique<engines::Simulator>(compiled->model(), options, externs_);
@@ -76,7 +143,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       monitors_.push_back(
           std::make_unique<monitors::RunMonitor>(*q.formula, kNanoseconds, b, q.run));
     } else {
-      extrema_.push_back(std::make_unique<monitors::RunExtremum>(q, kNanoseconds, b));
+      extrema_.push_back(std::make_unique<ExtremumWatch>(q, kNanoseconds, b));
     }
   }
 }
@@ -104,10 +171,13 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
     }
   }
   observer_->start();
-  trace_.str({});
+  trace_text_->clear();
+  trace_.clear();
   simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
-  if (traced_) made.trace = trace_.str();
+  if (traced_) made.trace = trace_text_->text();
+  made.trace_cut = traced_ && trace_text_->cut();
+  made.end = observer_->end();
   made.failure = observer_->failure();
   std::vector<Outcome>& outcomes = made.points;
   outcomes.assign(n, Outcome{});
@@ -118,11 +188,9 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
       continue;
     } else if (!monitors_.empty()) {
       outcomes[p].verdict = monitors_[p]->verdict();
-    } else {
-      // An expectation: a run that observed nothing has no value (NaN, as the mean then says).
-      outcomes[p] = {Verdict::True,
-                     extrema_[p]->value().value_or(std::numeric_limits<double>::quiet_NaN())};
-    }
+    } else if (const std::optional<double> value = extrema_[p]->value()) {
+      outcomes[p] = {Verdict::True, *value};
+    }  // else an expectation without a value for this run: undecided
   }
 }
 

@@ -32,7 +32,9 @@ struct QueryPoints {
 struct RunOutcomes {
   std::vector<Outcome> points;
   std::string trace;
-  std::string failure;  // the error the run ended in, if it did
+  bool trace_cut = false;  // the trace outgrew kMaxSavedTraceBytes: `trace` holds its start
+  engines::RunEnd end = engines::RunEnd::Stopped;  // how the run ended
+  std::string failure;                             // the error the run ended in, if it did
 };
 
 /// Makes runs of a query's model on one thread and judges them for its points.
@@ -51,12 +53,14 @@ class QueryRuns {
 
  private:
   class Observer;
+  class ExtremumWatch;
+  class CappedText;
 
   engines::Externs externs_;
   std::unique_ptr<engines::Simulator> simulator_;
   const QueryPoints& query_;
   std::vector<std::unique_ptr<monitors::RunMonitor>> monitors_;  // path formulas, per point
-  std::vector<std::unique_ptr<monitors::RunExtremum>> extrema_;  // expectations, per point
+  std::vector<std::unique_ptr<ExtremumWatch>> extrema_;          // expectations, per point
   std::unique_ptr<monitors::RunCriticalBound> sweep_;            // all points at once
   std::vector<double> swept_values_;  // the swept parameter's value at each point
   std::vector<char> judged_;          // this run: the points watched
@@ -64,7 +68,8 @@ class QueryRuns {
   std::unique_ptr<std::streambuf> nothing_;
   std::ostream sink_;
   bool traced_;
-  std::ostringstream trace_;
+  std::unique_ptr<CappedText> trace_text_;  // at most kMaxSavedTraceBytes
+  std::ostream trace_;
 };
 
 }  // namespace smcbip::smc
