@@ -329,19 +329,4 @@ RunResult simulate(const bipc::ir::System& system, const SimulateOptions& option
   return simulator.run(options.run_index, RunStreams{out, out, input});
 }
 
-int run_simulation(const Model& model, const SimulateOptions& options, const Externs& externs,
-                   const std::string& tool) {
-  std::ios::sync_with_stdio(false);
-  // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
-  std::ostream& model_output = options.trace == TraceFormat::Jsonl ? std::cerr : std::cout;
-  Simulator simulator(model, options, externs);
-  const RunResult run =
-      simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
-  std::cout.flush();
-  if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
-    std::cerr << tool << ": error: " << run.message << "\n";
-  }
-  return run.code;
-}
-
 }  // namespace smcbip::engines
