@@ -53,6 +53,9 @@ struct SimulateOptions {
   bool interactive = false;
   bool silent = false;
   bool explore = false;
+  /// --explore keeps every state it finds: at most this many (0.7 GB for the 10 atoms of
+  /// models/families/rendezvous_10.bip; larger states take more), then it stops.
+  std::uint64_t max_explored_states = 2'000'000;
   TraceFormat trace = TraceFormat::Text;
   /// The race of planned dates (BIP.md): none decides from the model (on when it has a
   /// @stochastic port), true forces it on timed models without one.

@@ -51,6 +51,11 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag(
       "--explore", options.explore,
       "enumerate the reachable states (untimed); with --limit, those within that many steps");
+  app.add_option("--max-states", options.max_explored_states,
+                 "--explore: keep at most this many states (default: " +
+                     std::to_string(options.max_explored_states) + "), then stop")
+      ->check(cli::integer_in(1, std::uint64_t{1} << 40))
+      ->type_name("N");
   app.add_flag_callback(
       "--stochastic", [&options] { options.stochastic = true; },
       "race planned dates (the default when the model has @stochastic ports)");
@@ -73,10 +78,11 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
 }
 
 /// `smcbip simulate`'s run of a model once loaded: the trace on stdout, the model's output on
-/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `tool`; returns
-/// the exit code (the RunCode).
+/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `where` (the
+/// model file), or by `tool` without one; returns the exit code (the RunCode).
 inline int run_simulation(const Model& model, const SimulateOptions& options,
-                          const Externs& externs, const std::string& tool) {
+                          const Externs& externs, const std::string& tool,
+                          const std::string& where = "") {
   std::ios::sync_with_stdio(false);
   // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
   std::ostream& model_output = options.trace == TraceFormat::Jsonl ? std::cerr : std::cout;
@@ -85,7 +91,7 @@ inline int run_simulation(const Model& model, const SimulateOptions& options,
       simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
   std::cout.flush();
   if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
-    std::cerr << tool << ": error: " << run.message << "\n";
+    std::cerr << (where.empty() ? tool : where) << ": error: " << run.message << "\n";
   }
   return run.code;
 }

@@ -75,9 +75,10 @@ class Simulation {
       line("initialize components...");
     }
     if (!runtime_.initialize() || !runtime_.resume_atoms(0)) return runtime_error();
-    const ExplorationCounts counts = explore_states(runtime_, options_.limit);
+    const ExplorationCounts counts =
+        explore_states(runtime_, options_.limit, options_.max_explored_states);
     write_exploration(out_, counts);
-    return {kRunOk, RunEnd::Deadlock, counts.states, {}};
+    return {kRunOk, counts.cut ? RunEnd::Limit : RunEnd::Deadlock, counts.states, {}};
   }
 
   RunResult run() {

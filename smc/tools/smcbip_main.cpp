@@ -64,7 +64,8 @@ int run_compiled(const bipc::FrontendOptions& frontend, const std::string& plugi
   }
   engines::Externs externs = engines::Externs::with_builtins();
   plugin.entry->register_externs(externs);
-  return engines::run_simulation(plugin.entry->model(), options, externs, "smcbip");
+  return engines::run_simulation(plugin.entry->model(), options, externs, "smcbip",
+                                 frontend.file.empty() ? plugin.path : frontend.file);
 }
 
 int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateOptions& options) {
@@ -72,7 +73,8 @@ int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateO
   const std::optional<bipc::ir::System> system = load_system(frontend, code);
   if (!system) return code;
   const engines::InterpretedModel model(*system);
-  return engines::run_simulation(model, options, engines::Externs::with_builtins(), "smcbip");
+  return engines::run_simulation(model, options, engines::Externs::with_builtins(), "smcbip",
+                                 frontend.file);
 }
 
 /// The exit codes of a command: those of checking for `monitor`, `check` and `explore`, those

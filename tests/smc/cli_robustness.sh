@@ -76,6 +76,12 @@ expect 64 "--threads: '100000' is not a number of threads" "${simulate[@]}" \
   --engine multithread --threads 100000
 expect 0 "" "${simulate[@]}" --engine multithread --threads 2 --seed 1
 
+# --- --explore keeps a bounded number of states (it grew without end on an infinite space)
+expect 0 "" "${simulating[@]}" --explore --max-states 1000
+grep -qF "exploration cut at 1000 states (--max-states)" "$out/stdout" ||
+  fail "--explore --max-states 1000: no cut reported: $(tail -2 "$out/stdout")"
+expect 64 "--max-states: '0' is not an integer" "${simulating[@]}" --explore --max-states 0
+
 # --- -I takes one folder per use, in every position and spelling
 expect 0 "" "$bin/bipc" check -I "$source/models" --include "$source" "$rendezvous" --root 'Top()'
 expect 0 "" "$bin/bipc" check "$rendezvous" -I"$source/models" --include="$source" --root 'Top()'
