@@ -122,23 +122,13 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
   return true;
 }
 
-/// The extern C++ files of `system`, or nullopt with the error printed.
-std::optional<ir::ExternSources> read_extern_sources(const ir::System& system,
-                                                     const FrontendOptions& options) {
-  try {
-    return ir::extern_sources_of(system, options.include_dirs);
-  } catch (const ir::ExternSourceError& e) {
-    std::cerr << "bipc: error: extern source " << e.path << ": " << e.message << "\n";
-    return std::nullopt;
-  }
-}
-
 int run_hash(const FrontendOptions& options) {
   FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
-  const std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
-  if (!sources) return kInputError;
-  std::cout << ir::model_hash(*result.system, *sources) << "\n";
+  // An extern source that cannot be read throws ExternSourceError, an InputError.
+  std::cout << ir::model_hash(*result.system,
+                              ir::extern_sources_of(*result.system, options.include_dirs))
+            << "\n";
   return kOk;
 }
 
@@ -153,9 +143,7 @@ int run_gen(const FrontendOptions& options, const std::string& output,
   if (!report(result) || !result.system) return kInputError;
   std::vector<codegen::GeneratedFile> files;
   if (!code_only) {
-    std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
-    if (!sources) return kInputError;
-    project.extern_sources = std::move(*sources);
+    project.extern_sources = ir::extern_sources_of(*result.system, options.include_dirs);
   }
   project.model_file = options.file;
   project.root = options.root.empty() ? result.system->root_type : options.root;

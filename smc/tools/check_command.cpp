@@ -117,26 +117,11 @@ bool plottable(const CheckCommand& check, const monitors::PropertyFile& file) {
   return false;
 }
 
-std::optional<std::string> hash_of(const bipc::ir::System& system, const CheckCommand& check) {
-  try {
-    return bipc::ir::model_hash(system,
-                                bipc::ir::extern_sources_of(system, check.model.include_dirs));
-  } catch (const bipc::ir::ExternSourceError& e) {
-    std::cerr << "smcbip: error: extern source " << e.path << ": " << e.message << "\n";
-    return std::nullopt;
-  }
-}
-
-/// The plugin of --compiled, if given, once it is known to hold the model `hash` names.
+/// The plugin of --compiled, if given, once it is known to hold the model `hash` names (one
+/// that cannot be loaded throws engines::PluginError, an InputError).
 bool load_compiled(CheckCommand& check, const std::string& hash) {
   if (check.compiled.empty()) return true;
-  engines::Plugin plugin;
-  try {
-    plugin = engines::load_plugin(check.compiled);
-  } catch (const engines::PluginError& e) {
-    std::cerr << "smcbip: error: --compiled: " << e.message << "\n";
-    return false;
-  }
+  const engines::Plugin plugin = engines::load_plugin(check.compiled);
   if (hash != plugin.entry->model_hash) {
     std::cerr << "smcbip: error: " << plugin.path << " holds another model (hash "
               << plugin.entry->model_hash << ") than " << check.model.file << " (hash " << hash
@@ -243,8 +228,10 @@ int run_check(CheckCommand check) {
   if (!plottable(check, parsed.file) || !writable_outputs(check) || !trace_folder(check)) {
     return kInputError;
   }
-  const std::optional<std::string> hash = hash_of(*system, check);
-  if (!hash || !load_compiled(check, *hash)) return kInputError;
+  // An extern source that cannot be read throws ExternSourceError, an InputError.
+  const std::string hash =
+      bipc::ir::model_hash(*system, bipc::ir::extern_sources_of(*system, check.model.include_dirs));
+  if (!load_compiled(check, hash)) return kInputError;
   check.options.remote = check.remote;
   std::optional<ProgressBar> progress;
   if (!check.worker && stderr_is_terminal()) {
@@ -271,7 +258,7 @@ int run_check(CheckCommand check) {
                       results,
                       check.model.file,
                       system->root_name,
-                      *hash,
+                      hash,
                       {check.method, check.undecided, &check.options, check.parameters}};
   if (check.json) {
     std::cout << json_text(report);

@@ -34,27 +34,16 @@ std::optional<bipc::ir::System> load_system(const bipc::FrontendOptions& fronten
 }
 
 /// Runs the compiled model of `plugin_path`; with a model file, only when it is that model.
+/// A plugin or extern source that cannot be read throws (an InputError for the firewall).
 int run_compiled(const bipc::FrontendOptions& frontend, const std::string& plugin_path,
                  const engines::SimulateOptions& options) {
-  engines::Plugin plugin;
-  try {
-    plugin = engines::load_plugin(plugin_path);
-  } catch (const engines::PluginError& e) {
-    std::cerr << "smcbip: error: --compiled: " << e.message << "\n";
-    return engines::kInputError;
-  }
+  const engines::Plugin plugin = engines::load_plugin(plugin_path);
   if (!frontend.file.empty()) {
     int code = 0;
     const std::optional<bipc::ir::System> system = load_system(frontend, code);
     if (!system) return code;
-    std::string hash;
-    try {
-      hash = bipc::ir::model_hash(*system,
-                                  bipc::ir::extern_sources_of(*system, frontend.include_dirs));
-    } catch (const bipc::ir::ExternSourceError& e) {
-      std::cerr << "smcbip: error: extern source " << e.path << ": " << e.message << "\n";
-      return engines::kInputError;
-    }
+    const std::string hash =
+        bipc::ir::model_hash(*system, bipc::ir::extern_sources_of(*system, frontend.include_dirs));
     if (hash != plugin.entry->model_hash) {
       std::cerr << "smcbip: error: " << plugin.path << " holds another model (hash "
                 << plugin.entry->model_hash << ") than " << frontend.file << " (hash " << hash

@@ -100,6 +100,12 @@ expect 2 "the trace is a device" "$bin/smcbip" monitor "$out/one.mtl" --trace /d
 head -c $((17 << 20)) /dev/zero | tr '\0' ' ' >"$out/huge.mtl"
 expect 2 "the property file is larger than 16 MiB" "${check[@]/$out\/one.mtl/$out/huge.mtl}"
 
+# --- a plugin that cannot be loaded is the user's input error, through the firewall
+expect 65 "smcbip: error: --compiled: no such file or folder: $out/none" \
+  "$bin/smcbip" simulate --compiled "$out/none"
+expect 2 "smcbip: error: --compiled: no such file or folder: $out/none" "${check[@]}" \
+  --compiled "$out/none"
+
 # --- output files: through links to their target, never over a FIFO, a device or a folder
 explore=("$bin/smcbip" explore "$channel" "$out/sweep.mtl" --root 'System()' --delta 0.1 --threads 2)
 echo old >"$out/target.csv"
