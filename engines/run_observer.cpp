@@ -21,6 +21,15 @@ double StateView::clock(bipc::ir::Index atom, bipc::ir::Index clock) const {
   return CodeEvaluator::clock_value(state_.clocks[slot], layout_.clock_units[slot], state_.now);
 }
 
+double StateView::clock_rate(bipc::ir::Index atom, bipc::ir::Index clock) const {
+  return state_.clocks[layout_.atom_clocks[atom] + clock].rate;
+}
+
+double StateView::clock_slope(bipc::ir::Index atom, bipc::ir::Index clock) const {
+  const std::size_t slot = layout_.atom_clocks[atom] + clock;
+  return state_.clocks[slot].rate / static_cast<double>(layout_.clock_units[slot]);
+}
+
 std::string_view StateView::text(Val v) const { return strings_.text(v.s); }
 
 const std::string& StateView::atom_name(bipc::ir::Index atom) const {

@@ -31,6 +31,10 @@ class StateView {
   Val data(bipc::ir::Index atom, bipc::ir::Index slot) const;
   /// Clock `clock` of atom `atom` now, in the clock's unit.
   double clock(bipc::ir::Index atom, bipc::ir::Index clock) const;
+  /// The rate of that clock now (1 unless the model set another).
+  double clock_rate(bipc::ir::Index atom, bipc::ir::Index clock) const;
+  /// How fast that clock grows now: its rate, in its units per nanosecond.
+  double clock_slope(bipc::ir::Index atom, bipc::ir::Index clock) const;
   /// The text of a string value.
   std::string_view text(Val v) const;
   /// The atom's full name as traces print it (`ROOT.a.b`).

@@ -317,7 +317,7 @@ RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
   if (!shared_->problem.empty()) return {kInputError, RunEnd::Error, 0, shared_->problem};
   std::optional<JsonlTrace> jsonl;
   if (shared_->options.trace == TraceFormat::Jsonl && !shared_->options.silent) {
-    jsonl.emplace(streams.trace, shared_->layout);
+    jsonl.emplace(streams.trace, shared_->layout, shared_->seed, run_index);
   }
   Observers observers(observer, jsonl ? &*jsonl : nullptr);
   Simulation simulation(*shared_, run_index, streams, observers);

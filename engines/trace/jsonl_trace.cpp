@@ -59,9 +59,26 @@ const char* end_name(RunEnd end) {
 
 double trace_time(TimeValue t) { return static_cast<double>(t) / 1e6; }
 
+void JsonlTrace::header(const StateView& state) {
+  Json clocks = Json::object();
+  const bipc::ir::System& system = state.system();
+  for (bipc::ir::Index a = 0; a < system.atoms.size(); ++a) {
+    const bipc::ir::AtomType& type = system.atom_types[system.atoms[a].type];
+    for (const bipc::ir::Clock& clock : type.clocks) {
+      clocks[state.atom_name(a) + "." + clock.name] = {{"unit_ns", nanoseconds_per(clock.unit)}};
+    }
+  }
+  Json line;
+  line["header"] = {{"format", "smcbip-trace"}, {"version", 1},      {"seed", seed_},
+                    {"run", run_index_},        {"time_unit", "ms"}, {"clocks", std::move(clocks)}};
+  out_ << bipc::dump_json(line) << '\n';
+}
+
 bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
+  if (step.step == 0) header(state);
   Json places = Json::object();
   Json data = Json::object();
+  Json rates = Json::object();
   const bipc::ir::System& system = state.system();
   for (bipc::ir::Index a = 0; a < system.atoms.size(); ++a) {
     const bipc::ir::AtomType& type = system.atom_types[system.atoms[a].type];
@@ -77,6 +94,8 @@ bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
     }
     for (bipc::ir::Index c = 0; c < type.clocks.size(); ++c) {
       data[name + "." + type.clocks[c].name] = state.clock(a, c);
+      const double rate = state.clock_rate(a, c);
+      if (rate != 1) rates[name + "." + type.clocks[c].name] = rate;
     }
   }
   Json line;
@@ -85,6 +104,7 @@ bool JsonlTrace::observe(const StepInfo& step, const StateView& state) {
   line["fired"] = fired_json(step, state, layout_);
   line["places"] = std::move(places);
   line["data"] = std::move(data);
+  if (!rates.empty()) line["rates"] = std::move(rates);
   out_ << bipc::dump_json(line) << '\n';
   return true;
 }

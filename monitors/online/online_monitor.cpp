@@ -60,6 +60,24 @@ std::int64_t whole(const Value& v, double scale, const Bindings& bindings) {
 
 }  // namespace
 
+double divide(const Expr& at, double x, double y) {
+  if (y == 0) throw MonitorError(at.at, "division by zero in '" + to_string(at) + "'");
+  return x / y;
+}
+
+double remainder(const Expr& at, double x, double y) {
+  // Whole numbers as C's % takes them, which must fit 64 bits.
+  constexpr double kLimit = 9223372036854775808.0;  // 2^63
+  if (!(std::abs(x) < kLimit) || !(std::abs(y) < kLimit)) {
+    throw MonitorError(
+        at.at, "an operand of '" + to_string(at) + "' is beyond the 64-bit integers % takes");
+  }
+  const auto divisor = static_cast<std::int64_t>(y);
+  if (divisor == 0) throw MonitorError(at.at, "remainder by zero in '" + to_string(at) + "'");
+  if (divisor == -1) return 0;  // INT64_MIN % -1 overflows
+  return static_cast<double>(static_cast<std::int64_t>(x) % divisor);
+}
+
 double evaluate(const Expr& e, const StateView& state, const Bindings& bindings) {
   using K = Expr::Kind;
   auto operand = [&](std::size_t k) { return evaluate(*e.operands[k], state, bindings); };
@@ -87,13 +105,9 @@ double evaluate(const Expr& e, const StateView& state, const Bindings& bindings)
     case K::Multiply:
       return operand(0) * operand(1);
     case K::Divide:
-      return operand(0) / operand(1);
-    case K::Modulo: {
-      const auto divisor = static_cast<std::int64_t>(operand(1));
-      if (divisor == 0) return std::numeric_limits<double>::quiet_NaN();
-      if (divisor == -1) return 0;  // INT64_MIN % -1 overflows
-      return static_cast<double>(static_cast<std::int64_t>(operand(0)) % divisor);
-    }
+      return divide(e, operand(0), operand(1));
+    case K::Modulo:
+      return remainder(e, operand(0), operand(1));
     case K::Less:
       return operand(0) < operand(1) ? 1 : 0;
     case K::LessEqual:
@@ -112,6 +126,43 @@ double evaluate(const Expr& e, const StateView& state, const Bindings& bindings)
       return std::max(operand(0), operand(1));
   }
   return 0;
+}
+
+Moment::Moment(const StateView& state, Tick ticks, const TimeScale& scale, bool initial,
+               RunEnd end_here)
+    : state_(state),
+      time_(static_cast<double>(ticks) / scale.ticks_per_unit),
+      time_slope_(1.0 / scale.ticks_per_unit),
+      initial_(initial),
+      end_(end_here) {}
+
+double Moment::value(const Expr& name) const {
+  switch (name.reference.kind) {
+    case Reference::Kind::Time:
+      return time_;
+    case Reference::Kind::Initial:
+      return initial_ ? 1 : 0;
+    case Reference::Kind::Deadlock:
+      return end_ == RunEnd::Deadlock ? 1 : 0;
+    case Reference::Kind::Timelock:
+      return end_ == RunEnd::Timelock ? 1 : 0;
+    default:
+      return state_.value(name);
+  }
+}
+
+double Moment::slope(const Expr& name) const {
+  if (name.reference.kind == Reference::Kind::Time) return time_slope_;
+  return is_builtin(name.reference) ? 0 : state_.slope(name);
+}
+
+bool reads_run_end(const Expr& e) {
+  if (e.kind == Expr::Kind::Name) {
+    return e.reference.kind == Reference::Kind::Deadlock ||
+           e.reference.kind == Reference::Kind::Timelock;
+  }
+  return std::any_of(e.operands.begin(), e.operands.end(),
+                     [](const auto& operand) { return reads_run_end(*operand); });
 }
 
 Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings) {
@@ -152,6 +203,9 @@ class OnlineMonitor::Builder {
         return junction(!negated, operand(0, negated), operand(1, negated));
       case K::Implies:
         return junction(!negated, operand(0, !negated), operand(1, negated));
+      case K::Iff:  // a <-> b = (a && b) || (!a && !b); negated: (a && !b) || (!a && b)
+        return junction(true, junction(false, operand(0, false), operand(1, negated)),
+                        junction(false, operand(0, true), operand(1, !negated)));
       case K::Next:
         return next(operand(0, negated));
       case K::Finally:  // !F phi = G !phi
@@ -176,14 +230,17 @@ class OnlineMonitor::Builder {
   std::size_t constant(bool value) {
     const std::size_t id = add(value ? "true" : "false", {'c', 0, 0, value},
                                [] { return std::make_unique<online::Leaf>(); });
-    if (fresh_) m_.leaves_.push_back({id, nullptr, value});
+    if (fresh_) m_.leaves_.push_back({id, nullptr, value, false, false});
     return id;
   }
 
   std::size_t literal(const Expr& predicate, bool negated) {
     const std::size_t id = add((negated ? "!" : "") + to_string(predicate), {'l'},
                                [] { return std::make_unique<online::Leaf>(); });
-    if (fresh_) m_.leaves_.push_back({id, &predicate, negated});
+    if (fresh_) {
+      m_.leaves_.push_back({id, &predicate, negated, !pointwise_ && reads_growing(predicate),
+                            reads_run_end(predicate)});
+    }
     return id;
   }
 
@@ -267,7 +324,7 @@ class OnlineMonitor::Builder {
 
 OnlineMonitor::OnlineMonitor(const Formula& formula, const TimeScale& scale,
                              const Bindings& bindings, const Bound& run, Reading reading)
-    : bindings_(bindings) {
+    : bindings_(bindings), scale_(scale), pointwise_(reading == Reading::Pointwise) {
   Builder builder(*this, scale, reading);
   root_ = builder.build(formula, false);
   root_reader_ = blank_signals_.of[root_].add_reader();
@@ -288,6 +345,8 @@ OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
       root_(other.root_),
       root_reader_(other.root_reader_),
       bindings_(other.bindings_),
+      scale_(other.scale_),
+      pointwise_(other.pointwise_),
       reads_steps_(other.reads_steps_),
       time_bound_(other.time_bound_),
       step_bound_(other.step_bound_),
@@ -313,7 +372,7 @@ OnlineMonitor::~OnlineMonitor() = default;
 void OnlineMonitor::reset() {
   nodes_ = clone_all(blank_nodes_);
   signals_ = blank_signals_;
-  pending_.assign(leaves_.size(), false);
+  pending_.assign(leaves_.size(), Pending{});
   started_ = false;
   steps_ = 0;
   origin_ = 0;
@@ -344,10 +403,21 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
     // The last step held up to this one: an instant when they share the time.
     emit_leaves(online::before(at));
   }
+  const bool initial = steps_ == 0;
   last_ = at;
   ++steps_;
   if (reads_steps_) signals_.segments.push(at);
-  for (std::size_t i = 0; i < leaves_.size(); ++i) pending_[i] = holds(leaves_[i], state);
+  for (std::size_t i = 0; i < leaves_.size(); ++i) {
+    const Leaf& leaf = leaves_[i];
+    Pending& pending = pending_[i];
+    const Moment going_on(state, time, scale_, initial);
+    compute(leaf, going_on, time, RunEnd::Cut, pending.going_on);
+    if (!leaf.reads_end) continue;
+    compute(leaf, Moment(state, time, scale_, initial, RunEnd::Deadlock), time, RunEnd::Deadlock,
+            pending.deadlock);
+    compute(leaf, Moment(state, time, scale_, initial, RunEnd::Timelock), time, RunEnd::Timelock,
+            pending.timelock);
+  }
   advance();
   if (const online::Run* run = root_run()) decide(run->value ? Verdict::True : Verdict::False);
   return verdict_;
@@ -356,7 +426,13 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
 Verdict OnlineMonitor::end(RunEnd how) {
   if (decided_ || !started_) return verdict_;
   if (how == RunEnd::Deadlock) {
-    emit_leaves(kForever);
+    emit_leaves(kForever, how);
+    signals_.segments.finish();
+    advance();
+  } else if (how == RunEnd::Timelock) {
+    // Time stops at the last step: its instant is the run's last, and the run is over.
+    emit_leaves(kForever, how);
+    for (const auto& node : nodes_) node->close({last_.t, kLastRank});
     signals_.segments.finish();
     advance();
   } else {
@@ -411,9 +487,40 @@ void OnlineMonitor::decide(Verdict verdict) {
   sure_hit_ = possible_hit_ = nodes_[root_]->first_hit();
 }
 
-void OnlineMonitor::emit_leaves(Pos end) {
+void OnlineMonitor::compute(const Leaf& leaf, const StateView& state, Tick /*time*/, RunEnd /*how*/,
+                            std::vector<TruthChange>& out) const {
+  if (leaf.predicate == nullptr) {  // a constant: its value
+    out.assign(1, {0, leaf.negated});
+    return;
+  }
+  if (leaf.grows) {
+    truth_changes(*leaf.predicate, state, bindings_, out);
+    if (leaf.negated) {
+      for (TruthChange& change : out) change.value = !change.value;
+    }
+    return;
+  }
+  out.assign(1, {0, (evaluate(*leaf.predicate, state, bindings_) != 0) != leaf.negated});
+}
+
+void OnlineMonitor::emit_leaves(Pos end, RunEnd how) {
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
-    signals_.of[leaves_[i].node].emit(end, pending_[i]);
+    const Pending& pending = pending_[i];
+    const std::vector<TruthChange>& changes = !leaves_[i].reads_end     ? pending.going_on
+                                              : how == RunEnd::Deadlock ? pending.deadlock
+                                              : how == RunEnd::Timelock ? pending.timelock
+                                                                        : pending.going_on;
+    online::Signal& signal = signals_.of[leaves_[i].node];
+    // Each change holds up to the position before the next one's start, or `end`.
+    for (std::size_t k = 0; k < changes.size(); ++k) {
+      Pos until = end;
+      if (k + 1 < changes.size()) {
+        const Pos next_start{last_.t + changes[k + 1].offset, 0};
+        if (next_start <= end) until = online::before(next_start);
+      }
+      signal.emit(until, changes[k].value);
+      if (until == end) break;
+    }
   }
 }
 
@@ -435,11 +542,6 @@ std::size_t OnlineMonitor::held_runs() const {
   std::size_t runs = 0;
   for (const online::Signal& signal : signals_.of) runs += signal.size();
   return runs;
-}
-
-bool OnlineMonitor::holds(const Leaf& leaf, const StateView& state) const {
-  if (leaf.predicate == nullptr) return leaf.negated;  // a constant: its value
-  return (evaluate(*leaf.predicate, state, bindings_) != 0) != leaf.negated;
 }
 
 }  // namespace smcbip::monitors

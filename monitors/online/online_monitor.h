@@ -2,8 +2,9 @@
 // verdict as soon as the steps read decide it, keeping only what the formula's windows still
 // need (never the run). Semantics: PROPERTIES.md's continuous reading (a state holds from its
 // step's time to the next step's; steps may share a timestamp), non-strict until, a run that
-// deadlocks keeps its last state forever, a run cut short leaves undecided what its missing
-// future could change (Kleene's three values).
+// deadlocks keeps its last state forever while its clocks grow, a run that time-locks ends at
+// its last instant, a run cut short leaves undecided what its missing future could change
+// (Kleene's three values).
 #pragma once
 
 #include <cstddef>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "monitors/online/growing_truth.h"
 #include "monitors/online/nodes.h"
 #include "monitors/online/signal.h"
 #include "monitors/property/ast.h"
@@ -29,13 +31,17 @@ class StateView {
   virtual double value(const Expr& name) const = 0;
   /// Whether the step fired what `fired` (Expr::Kind::Fired) names.
   virtual bool fired(const Expr& fired) const = 0;
+  /// How fast the value of a name grows after the step, per tick: a clock's rate in its units
+  /// per tick; 0 for what only steps change (the default).
+  virtual double slope(const Expr& /*name*/) const { return 0; }
 };
 
 enum class Verdict : std::uint8_t { False, True, Undecided };
 
-/// How a run ended after its last step: deadlocked (its last state holds forever), or cut
-/// short (a time-lock, a limit, an error: what follows is unknown).
-enum class RunEnd : std::uint8_t { Deadlock, Cut };
+/// How a run ended after its last step: deadlocked (its last state holds forever, time passes
+/// and clocks grow), time-locked (time cannot pass its last step's: nothing follows), or cut
+/// short (a limit, an error, a stop: what follows is unknown).
+enum class RunEnd : std::uint8_t { Deadlock, Timelock, Cut };
 
 /// The time scale of bounds: ticks per unit of the model (a number without a unit) and per
 /// second (numbers with s, ms, us, ns); bounds must come to whole ticks.
@@ -52,9 +58,35 @@ enum class Reading : std::uint8_t { Continuous, Pointwise };
 /// Values of the constants and parameters the formula names.
 using Bindings = std::map<std::string, double>;
 
+/// A state at a moment of its run: the language's own names (time, init, deadlock, timelock)
+/// are answered from the run, the others by the state.
+class Moment final : public StateView {
+ public:
+  /// `ticks`: the step's time; `scale` gives time in the model's unit.
+  Moment(const StateView& state, online::Tick ticks, const TimeScale& scale, bool initial,
+         RunEnd end_here = RunEnd::Cut);
+  double value(const Expr& name) const override;
+  bool fired(const Expr& fired) const override { return state_.fired(fired); }
+  double slope(const Expr& name) const override;
+
+ private:
+  const StateView& state_;
+  double time_, time_slope_;
+  bool initial_;
+  RunEnd end_;  // Deadlock or Timelock: this is the run's last state and ends so
+};
+
+/// Whether a state expression reads how the run ends (deadlock, timelock).
+bool reads_run_end(const Expr& e);
+
 /// The value of a state expression in `state`; names bound in `bindings` (constants,
 /// parameters) read from there. Conditions are 1 or 0.
 double evaluate(const Expr& e, const StateView& state, const Bindings& bindings);
+
+/// x / y and x % y (C's, on whole numbers) for the operator `at`; a zero divisor, or an operand
+/// of % beyond 64 bits, throws MonitorError at the operator's position.
+double divide(const Expr& at, double x, double y);
+double remainder(const Expr& at, double x, double y);
 
 /// `v` (a number, or a name bound in `bindings`) as a bound in whole ticks of `scale`. Throws
 /// MonitorError when it is negative, unbound or finer than a tick.
@@ -108,11 +140,21 @@ class OnlineMonitor {
     std::size_t node = 0;
     const Expr* predicate = nullptr;  // null: a constant
     bool negated = false;             // a predicate's negation, or a constant's value
+    bool grows = false;               // reads clocks or time: may change between steps
+    bool reads_end = false;           // reads deadlock or timelock
+  };
+  /// A leaf's truth along the last step read: as it holds if the run goes on, and if the run
+  /// deadlocks or time-locks there (for leaves that read how it ends).
+  struct Pending {
+    std::vector<TruthChange> going_on, deadlock, timelock;
   };
   class Builder;
 
-  /// Every leaf's value of the last step read, up to `end`.
-  void emit_leaves(online::Pos end);
+  /// Every leaf's value of the last step read, up to `end`, as the run goes on or ends.
+  void emit_leaves(online::Pos end, RunEnd how = RunEnd::Cut);
+  /// A leaf's truth along the last step (or its value at the step, `pointwise_`).
+  void compute(const Leaf& leaf, const StateView& state, online::Tick time, RunEnd how,
+               std::vector<TruthChange>& out) const;
   void advance();
   /// The root's value at the first position, once known.
   const online::Run* root_run();
@@ -123,7 +165,6 @@ class OnlineMonitor {
   void decide(Verdict verdict);
   /// The observation ended with `end`, its last position: the verdict is then known.
   void finish_observation(online::Pos end);
-  bool holds(const Leaf& leaf, const StateView& state) const;
 
   // The formula as built (operands before what reads them; the root last) and its blank
   // signals, copied by reset.
@@ -132,13 +173,15 @@ class OnlineMonitor {
   std::vector<Leaf> leaves_;
   std::size_t root_ = 0, root_reader_ = 0;
   Bindings bindings_;
+  TimeScale scale_;
+  bool pointwise_ = false;
   bool reads_steps_ = false;  // some node counts steps (X, step bounds): segments are kept
   online::Tick time_bound_ = online::kNever;  // in half ticks
   std::int64_t step_bound_ = std::numeric_limits<std::int64_t>::max();
 
   std::vector<std::unique_ptr<online::Node>> nodes_;
   online::Signals signals_;
-  std::vector<bool> pending_;  // per leaf: its value in the last step read
+  std::vector<Pending> pending_;  // per leaf: its truth along the last step read
   bool started_ = false;
   std::int64_t steps_ = 0;  // the steps read
   online::Tick origin_ = 0;

@@ -1,7 +1,10 @@
 // The model-free checks of a parsed property file (see property_checks.h).
 #include "monitors/parse/property_checks.h"
 
+#include <cmath>
+#include <cstdio>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -29,6 +32,33 @@ double nanoseconds(TimeUnit unit) {
   return 1e6;
 }
 
+/// The most values a parameter may take: a sweep is judged point by point, each with its own
+/// runs, so beyond this a sweep cannot finish.
+constexpr double kMaxParameterValues = 100000;
+
+/// The most trajectories a simulate query writes: each is a file's worth of lines.
+constexpr double kMaxSimulatedRuns = 10000;
+
+/// The most runs an expectation may ask for: far beyond what a machine makes in a day.
+constexpr double kMaxRuns = 1e12;
+
+bool is_temporal(const Formula& f) {
+  switch (f.kind) {
+    case Formula::Kind::Next:
+    case Formula::Kind::Finally:
+    case Formula::Kind::Globally:
+    case Formula::Kind::Until:
+    case Formula::Kind::Release:
+      return true;
+    default:
+      break;
+  }
+  for (const auto& operand : f.operands) {
+    if (is_temporal(*operand)) return true;
+  }
+  return false;
+}
+
 class Checker {
  public:
   explicit Checker(bipc::Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
@@ -36,6 +66,8 @@ class Checker {
   void run(const PropertyFile& file) {
     for (const Declaration& d : file.declarations) declare(d);
     for (const Query& q : file.queries) query(q);
+    // Only in a file otherwise right: a parameter refused already needs no second message.
+    if (!diagnostics_.has_errors()) unused_parameters(file);
   }
 
  private:
@@ -52,17 +84,69 @@ class Checker {
     } else if (d.range && d.values[1].number < d.values[0].number) {
       error(d.values[1].at, "parameter '" + d.name + "' stops (" + d.values[1].text +
                                 ") before it starts (" + d.values[0].text + ")");
+    } else if (d.range) {
+      const double count =
+          std::floor((d.values[1].number - d.values[0].number) / d.values[2].number) + 1;
+      if (!(count <= kMaxParameterValues)) {
+        error(d.values[2].at, "parameter '" + d.name + "' would take " + number_text(count) +
+                                  " values; a sweep takes at most " +
+                                  number_text(kMaxParameterValues) + ": use a larger step");
+      }
+    } else if (static_cast<double>(d.values.size()) > kMaxParameterValues) {
+      error(d.at, "parameter '" + d.name + "' lists more than " + number_text(kMaxParameterValues) +
+                      " values");
+    }
+  }
+
+  static std::string number_text(double x) {
+    if (x < 1e15) return std::to_string(static_cast<long long>(x));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+  }
+
+  // A parameter no query reads sweeps nothing: it is a mistake (a misspelt name, a query
+  // forgotten), not a request.
+  void unused_parameters(const PropertyFile& file) {
+    std::set<std::string> used;
+    for (const Query& q : file.queries) used.merge(names_read(q));
+    for (const Declaration& d : file.declarations) {
+      if (d.kind == Declaration::Kind::Parameter && !used.contains(d.name)) {
+        error(d.at, "parameter '" + d.name + "' is not used by any query");
+      }
     }
   }
 
   void query(const Query& q) {
+    if ((q.kind == Query::Kind::Invariant || q.kind == Query::Kind::Reachable) &&
+        is_temporal(*q.formula)) {
+      error(q.formula->at, std::string(q.kind == Query::Kind::Invariant ? "A[]" : "E<>") +
+                               " takes a state predicate, without temporal operators");
+    }
     run_bound(q.run);
     if (q.kind == Query::Kind::Hypothesis) threshold(q.threshold);
+    if (q.kind == Query::Kind::Compare) run_bound(q.other_run);
+    if (q.kind == Query::Kind::Simulate) {
+      whole(q.runs, "the number of runs", 1.0);
+      if (!q.runs.is_name() && q.runs.number > kMaxSimulatedRuns) {
+        error(q.runs.at, "simulate writes at most " + number_text(kMaxSimulatedRuns) +
+                             " trajectories, got " + q.runs.text);
+      }
+      for (const auto& e : q.series) expression(*e);
+      return;
+    }
     if (q.kind == Query::Kind::Expectation) {
-      if (q.pr_form) whole(q.runs, "the number of runs", 1.0);
+      if (q.pr_form) {
+        whole(q.runs, "the number of runs", 1.0);
+        if (!q.runs.is_name() && q.runs.number > kMaxRuns) {
+          error(q.runs.at, "the number of runs must be at most " + number_text(kMaxRuns) +
+                               ", got " + q.runs.text);
+        }
+      }
       expression(*q.observed);
     } else {
       formula(*q.formula);
+      if (q.other) formula(*q.other);
     }
   }
 

@@ -13,27 +13,34 @@ bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
 
-// Longest first, so that `<=` wins over `<` and `=?` over `=`.
-constexpr std::array<std::string_view, 10> kTwoCharSymbols = {"<=", ">=", "==", "!=", "&&",
-                                                              "||", "->", "=?", "[]", "<>"};
-constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>";
+// Longest first, so that `<=>` wins over `<=`, `<=` over `<` and `=?` over `=`.
+constexpr std::array<std::string_view, 14> kSymbols = {"<=>", "<->", "<=", ">=", "==", "!=", "&&",
+                                                       "||",  "->",  "=>", "=?", "[]", "<>", "-->"};
+constexpr std::string_view kOneCharSymbols = "()[]{},;:.!?#+-*/%=<>&|";
 
-class Lexer {
+}  // namespace
+
+class TokenStream::Lexer {
  public:
   Lexer(std::string_view text, std::uint32_t file, bipc::Diagnostics& diagnostics)
-      : text_(text), file_(file), diagnostics_(diagnostics) {}
+      : text_(text),
+        file_(file),
+        diagnostics_(diagnostics),
+        errors_at_start_(diagnostics.error_count()) {}
 
-  std::vector<Token> run() {
-    std::vector<Token> tokens;
+  /// The next token; End at the end of the text, or once the file has too many errors to be
+  /// worth reading on (a binary file would give one per byte).
+  Token next() {
     for (;;) {
       skip_space_and_comments();
       Token token;
       token.at = here();
-      if (pos_ >= text_.size()) {
-        tokens.push_back(std::move(token));
-        return tokens;
+      if (diagnostics_.error_count() >= errors_at_start_ + kMaxErrors) {
+        diagnostics_.error(here(), "too many errors, the rest of the file is not read");
+        pos_ = text_.size();
+        return token;
       }
-      if (lex(token)) tokens.push_back(std::move(token));
+      if (pos_ >= text_.size() || lex(token)) return token;
     }
   }
 
@@ -86,11 +93,12 @@ class Lexer {
       return true;
     }
     if (is_digit(c)) return number(token);
-    for (std::string_view symbol : kTwoCharSymbols) {
-      if (text_.substr(pos_, 2) == symbol) {
+    if (c == '"') return label(token);
+    for (std::string_view symbol : kSymbols) {
+      if (text_.substr(pos_, symbol.size()) == symbol) {
         token.kind = TokenKind::Symbol;
         token.text = std::string(symbol);
-        advance(2);
+        advance(symbol.size());
         return true;
       }
     }
@@ -109,6 +117,22 @@ class Lexer {
     diagnostics_.error(here(), "unexpected character " + shown + " in a property");
     advance();
     return false;
+  }
+
+  // A PRISM label, `"deadlock"`: its name, without the quotes, on one line.
+  bool label(Token& token) {
+    const bipc::Location at = here();
+    advance();
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && peek() != '"' && peek() != '\n') advance();
+    if (peek() != '"') {
+      diagnostics_.error(at, "unterminated label: expected '\"' before the end of the line");
+      return false;
+    }
+    token.kind = TokenKind::Label;
+    token.text = std::string(text_.substr(start, pos_ - start));
+    advance();
+    return true;
   }
 
   // Digits, an optional fraction and exponent, then an optional unit suffix (s, ms, us, ns).
@@ -166,18 +190,37 @@ class Lexer {
     return true;
   }
 
+  // Enough to show what is wrong with a file; beyond, the errors are the same again.
+  static constexpr std::size_t kMaxErrors = 20;
+
   std::string_view text_;
   std::uint32_t file_;
   bipc::Diagnostics& diagnostics_;
+  std::size_t errors_at_start_;
   std::size_t pos_ = 0;
   std::uint32_t line_ = 1, column_ = 1;
 };
 
-}  // namespace
+TokenStream::TokenStream(std::string_view text, std::uint32_t file, bipc::Diagnostics& diagnostics)
+    : lexer_(std::make_unique<Lexer>(text, file, diagnostics)) {}
 
-std::vector<Token> lex_properties(std::string_view text, std::uint32_t file,
-                                  bipc::Diagnostics& diagnostics) {
-  return Lexer(text, file, diagnostics).run();
+TokenStream::~TokenStream() = default;
+
+void TokenStream::push_front(Token token) { ahead_.push_front(std::move(token)); }
+
+const Token& TokenStream::peek(std::size_t ahead) {
+  while (ahead_.size() <= ahead && (ahead_.empty() || ahead_.back().kind != TokenKind::End)) {
+    ahead_.push_back(lexer_->next());
+  }
+  return ahead < ahead_.size() ? ahead_[ahead] : ahead_.back();
+}
+
+const Token& TokenStream::take() {
+  peek();
+  previous_ = ahead_.front();
+  ++taken_;
+  if (ahead_.front().kind != TokenKind::End) ahead_.pop_front();
+  return previous_;
 }
 
 std::string describe(const Token& token) {
@@ -190,6 +233,8 @@ std::string describe(const Token& token) {
       return "number " + token.text;
     case TokenKind::Symbol:
       return "'" + token.text + "'";
+    case TokenKind::Label:
+      return "label \"" + token.text + "\"";
   }
   return "?";
 }

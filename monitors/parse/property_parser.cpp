@@ -4,9 +4,12 @@
 // `expected X, got Y` at the offending token, the parser resynchronises on the next statement so
 // one run reports independent errors, and nesting is bounded so hostile input gets a diagnostic.
 //
-// Formulas and state expressions share one precedence ladder, loosest first:
-//   ->  (right)   ||   &&   U R (right, with bounds)   ! X F G <> []   comparisons   + -   * / %
-//   unary -   primaries. An atomic predicate is whatever the comparison level reads.
+// Precedence as PRISM's grammar (PrismParser.jj) and UPPAAL's, loosest first:
+//   U R (right, with bounds)   -> <-> (right)   ||   &&   ! and the prefix temporal operators
+//   comparisons   + -   * / %   unary -   primaries.
+// A prefix temporal operator (X F G <> [] with its bound) takes the longest boolean expression
+// after it, up to a closing parenthesis or a binary U/R: `F a && b` is `F (a && b)`, `F a U b` is
+// `(F a) U b`. An atomic predicate is whatever the comparison level reads.
 #include "monitors/parse/property_parser.h"
 
 #include <algorithm>
@@ -29,16 +32,22 @@ using detail::TokenKind;
 // Thrown after an error was reported: the statement is abandoned and the parser resynchronises.
 struct Abandon {};
 
-constexpr int kMaxNestingDepth = 200;
+// The deepest a formula's tree may grow, counting the operands of operator chains (`a && b &&
+// ...`): deep enough for any formula a person or a generator writes, shallow enough that what
+// walks the tree recursively keeps to a thread's stack.
+constexpr int kMaxNestingDepth = 1000;
 
 bool is_statement_keyword(const Token& t) {
-  return t.kind == TokenKind::Name && (t.text == "const" || t.text == "param" || t.text == "P" ||
-                                       t.text == "Pr" || t.text == "E");
+  return t.kind == TokenKind::Name &&
+         (t.text == "const" || t.text == "param" || t.text == "P" || t.text == "Pr" ||
+          t.text == "E" || t.text == "A" || t.text == "simulate");
 }
 
 // Words of the language that cannot name a constant or parameter.
 bool is_reserved(const Token& t) {
-  static constexpr std::string_view kReserved[] = {"X", "F", "G", "U", "R", "true", "false"};
+  static constexpr std::string_view kReserved[] = {
+      "X",   "F",  "G",   "U",     "R",        "W",        "true", "false",
+      "and", "or", "not", "imply", "deadlock", "timelock", "time", "init"};
   if (is_statement_keyword(t)) return true;
   for (std::string_view word : kReserved) {
     if (t.text == word) return true;
@@ -48,14 +57,14 @@ bool is_reserved(const Token& t) {
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, bipc::Diagnostics& diagnostics)
-      : tokens_(std::move(tokens)), diagnostics_(diagnostics) {}
+  Parser(detail::TokenStream& tokens, bipc::Diagnostics& diagnostics)
+      : tokens_(tokens), diagnostics_(diagnostics) {}
 
   PropertyFile file() {
     PropertyFile out;
     while (peek().kind != TokenKind::End) {
       if (symbol(";")) continue;
-      statement_start_ = pos_;
+      statement_start_ = tokens_.taken();
       try {
         statement(out);
       } catch (const Abandon&) {
@@ -67,20 +76,16 @@ class Parser {
 
  private:
   // Tokens.
-  const Token& peek(std::size_t ahead = 0) const {
-    const std::size_t i = pos_ + ahead;
-    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  // A reference from peek() holds until the token is taken; one from take() until the next.
+  const Token& peek(std::size_t ahead = 0) { return tokens_.peek(ahead); }
+  const Token& take() { return tokens_.take(); }
+  bool is_symbol(std::string_view text, std::size_t ahead = 0) {
+    const Token& t = peek(ahead);
+    return t.kind == TokenKind::Symbol && t.text == text;
   }
-  const Token& take() {
-    const Token& t = peek();
-    if (pos_ + 1 < tokens_.size()) ++pos_;
-    return t;
-  }
-  bool is_symbol(std::string_view text, std::size_t ahead = 0) const {
-    return peek(ahead).kind == TokenKind::Symbol && peek(ahead).text == text;
-  }
-  bool is_word(std::string_view text, std::size_t ahead = 0) const {
-    return peek(ahead).kind == TokenKind::Name && peek(ahead).text == text;
+  bool is_word(std::string_view text, std::size_t ahead = 0) {
+    const Token& t = peek(ahead);
+    return t.kind == TokenKind::Name && t.text == text;
   }
   bool symbol(std::string_view text) {
     if (!is_symbol(text)) return false;
@@ -99,18 +104,20 @@ class Parser {
   void resynchronise() {
     // The failing token may itself start the next statement (a statement cut short at the end
     // of its line); it is skipped only when the failed statement consumed nothing.
-    if (pos_ > statement_start_ && starts_statement_line(pos_)) return;
+    if (tokens_.taken() > statement_start_ && starts_statement_line()) return;
     std::uint32_t line = peek().at.line;
     take();
     while (peek().kind != TokenKind::End) {
       if (symbol(";")) return;
-      if (peek().at.line != line && starts_statement_line(pos_)) return;
+      if (peek().at.line != line && starts_statement_line()) return;
       line = take().at.line;
     }
   }
-  bool starts_statement_line(std::size_t i) const {
-    const Token& t = tokens_[i];
-    const bool first_on_line = i == 0 || tokens_[i - 1].at.line != t.at.line;
+  // Whether the next token starts its line and a statement.
+  bool starts_statement_line() {
+    const Token& t = peek();
+    const Token* before = tokens_.previous();
+    const bool first_on_line = before == nullptr || before->at.line != t.at.line;
     return first_on_line && (t.at.column == 1 || is_statement_keyword(t));
   }
 
@@ -118,14 +125,19 @@ class Parser {
   void statement(PropertyFile& out) {
     if (is_word("const") || is_word("param")) {
       out.declarations.push_back(declaration());
+    } else if (is_word("A") || (is_word("E") && (is_symbol("<>", 1) || is_symbol("[]", 1)))) {
+      out.queries.push_back(path_quantified());
     } else if (is_word("P") || is_word("Pr") || is_word("E")) {
       out.queries.push_back(is_word("P") ? p_query() : is_word("Pr") ? pr_query() : e_query());
+    } else if (is_word("simulate")) {
+      out.queries.push_back(simulate_query());
     } else {
-      fail("a query (P, Pr or E) or a declaration (const or param)");
+      unsupported_query();
+      fail("a query (P, Pr, E, simulate, A[] or E<>) or a declaration (const or param)");
     }
     // Statements end with `;` or at the end of their line.
     if (!symbol(";") && peek().kind != TokenKind::End &&
-        peek().at.line == tokens_[pos_ - 1].at.line) {
+        peek().at.line == tokens_.previous()->at.line) {
       fail("';' or a new line after the statement");
     }
   }
@@ -135,6 +147,9 @@ class Parser {
     d.at = peek().at;
     d.kind = take().text == "const" ? Declaration::Kind::Constant : Declaration::Kind::Parameter;
     if ((is_word("int") || is_word("double")) && peek(1).kind == TokenKind::Name) take();
+    if (is_word("bool") && peek(1).kind == TokenKind::Name) {
+      fail("a number: constants are numbers (write 1 or 0 for a boolean)");
+    }
     if (peek().kind != TokenKind::Name || is_reserved(peek())) fail("the name being declared");
     d.name = take().text;
     expect("=", "after the declared name");
@@ -185,11 +200,88 @@ class Parser {
     q.formula = formula();
     expect(")", "after the path formula");
     if (is_symbol(">=") || is_symbol(">") || is_symbol("<=") || is_symbol("<")) {
-      q.kind = Query::Kind::Hypothesis;
       q.comparison = comparison("a comparison");
+      if (is_word("Pr")) {
+        // Pr[<=T](phi) >= Pr[<=T2](psi): two probabilities compared (UPPAAL).
+        q.kind = Query::Kind::Compare;
+        take();
+        expect("[", "after Pr (Pr[<=T] or Pr[#<=K])");
+        q.other_run = run_bound();
+        expect("]", "after the run bound");
+        expect("(", "before the path formula");
+        q.other = formula();
+        expect(")", "after the path formula");
+        return q;
+      }
+      q.kind = Query::Kind::Hypothesis;
       q.threshold = value("the probability threshold");
     }
     return q;
+  }
+
+  // simulate [<=T; N] { e1, e2, ... } (UPPAAL): N runs' trajectories of the expressions.
+  Query simulate_query() {
+    Query q;
+    q.kind = Query::Kind::Simulate;
+    q.at = take().at;  // simulate
+    q.pr_form = true;
+    expect("[", "after simulate (simulate [<=T; N] { e1, e2 })");
+    q.run = run_bound();
+    expect(";", "between the run bound and the number of runs");
+    q.runs = value("the number of runs");
+    expect("]", "after the number of runs");
+    expect("{", "before the expressions to follow");
+    do {
+      q.series.push_back(expression());
+    } while (symbol(","));
+    expect("}", "after the expressions to follow");
+    return q;
+  }
+
+  // `A[] phi` and `E<> phi` (UPPAAL): exact questions over every reachable state, which the
+  // invariant prover answers, not statistics.
+  Query path_quantified() {
+    Query q;
+    q.at = peek().at;
+    const bool all = take().text == "A";
+    if (all && is_symbol("<>")) {
+      fail("'[]' after A: A<> (inevitability) is not supported; P>=1 [ F phi ] estimates it");
+    }
+    if (!all && is_symbol("[]")) {
+      fail("'<>' after E: E[] is not supported; P>0 [ G phi ] estimates it");
+    }
+    if (!symbol(all ? "[]" : "<>")) fail(all ? "'[]' after A (A[] phi)" : "'<>' after E");
+    q.kind = all ? Query::Kind::Invariant : Query::Kind::Reachable;
+    q.formula = formula();
+    return q;
+  }
+
+  // Queries of other tools that smcbip does not answer, with the form it answers instead.
+  void unsupported_query() {
+    const Token& t = peek();
+    if (t.kind != TokenKind::Name) return;
+    const bool question = is_symbol("=?", 1) || is_symbol("[", 1) || is_symbol(">=", 1) ||
+                          is_symbol("<=", 1) || is_symbol(">", 1) || is_symbol("<", 1);
+    if (!question) return;
+    if (t.text == "S") {
+      unsupported(t.at,
+                  "steady-state queries (S) are not supported: estimate a long-run "
+                  "probability with P=? [ F[T,T] phi ] for a large T");
+    }
+    if (t.text == "R") {
+      unsupported(t.at,
+                  "reward queries (R) are not supported: use E[<=T; N](int: e) for a "
+                  "cumulative reward, E[<=T; N](last: e) for an instantaneous one");
+    }
+    if (t.text == "Pmin" || t.text == "Pmax") {
+      unsupported(t.at, t.text +
+                            " is not supported: the models have no nondeterminism to "
+                            "resolve; use P=?");
+    }
+  }
+  [[noreturn]] void unsupported(bipc::Location at, const std::string& message) {
+    diagnostics_.error(at, message);
+    throw Abandon{};
   }
 
   // E[<=T; N](max: e) (UPPAAL), or E=? [ max: e ] (the runs' length and number left to the
@@ -210,17 +302,29 @@ class Parser {
     expect(";", "between the run bound and the number of runs");
     q.runs = value("the number of runs");
     expect("]", "after the number of runs");
-    expect("(", "before max: or min:");
+    expect("(", "before max:, min:, last:, int: or count:");
     observed(q);
     expect(")", "after the observed expression");
     return q;
   }
 
-  // `max: e` or `min: e`.
+  // `max: e`, `min: e`, `last: e`, `int: e` or `count: fired(c)`.
   void observed(Query& q) {
-    if (!is_word("max") && !is_word("min")) fail("'max' or 'min'");
-    q.maximum = take().text == "max";
-    expect(":", "after " + std::string(q.maximum ? "max" : "min"));
+    static constexpr std::pair<std::string_view, Observation> kObservations[] = {
+        {"max", Observation::Max},
+        {"min", Observation::Min},
+        {"last", Observation::Last},
+        {"int", Observation::Integral},
+        {"count", Observation::Count}};
+    const auto found = std::find_if(std::begin(kObservations), std::end(kObservations),
+                                    [&](const auto& o) { return is_word(o.first); });
+    if (found == std::end(kObservations)) fail("'max', 'min', 'last', 'int' or 'count'");
+    take();
+    q.observe = found->second;
+    expect(":", "after " + std::string(found->first));
+    if (q.observe == Observation::Count && !(is_word("fired") && is_symbol("(", 1))) {
+      fail("fired(connector) after count: (count: fired(c) counts the steps that fire c)");
+    }
     q.observed = expression();
   }
 
@@ -312,21 +416,78 @@ class Parser {
     return f;
   }
 
-  std::unique_ptr<Formula> formula() { return implies(); }
+  // One more level of the tree below an operator chain; false (reported) beyond the limit.
+  void deepen(int& levels) {
+    ++levels;
+    if (++depth_ > kMaxNestingDepth) too_deep();
+  }
+  [[noreturn]] void too_deep() {
+    diagnostics_.error(peek().at, "property nested too deeply (more than " +
+                                      std::to_string(kMaxNestingDepth) + " levels of operators)");
+    throw Abandon{};
+  }
+  // Restores the depth an operator chain added, however the chain ends.
+  struct ChainDepth {
+    Parser& parser;
+    int levels = 0;
+    ~ChainDepth() { parser.depth_ -= levels; }
+  };
 
-  std::unique_ptr<Formula> implies() {
+  bool is_any(std::initializer_list<std::string_view> symbols,
+              std::initializer_list<std::string_view> words) {
+    for (std::string_view s : symbols) {
+      if (is_symbol(s)) return true;
+    }
+    for (std::string_view w : words) {
+      if (is_word(w)) return true;
+    }
+    return false;
+  }
+
+  std::unique_ptr<Formula> formula() { return temporal_binary(); }
+
+  // phi U[a,b] psi, phi R[a,b] psi: the loosest operators, right-associative.
+  std::unique_ptr<Formula> temporal_binary() {
+    const DepthGuard guard(*this);
+    std::unique_ptr<Formula> left = implication();
+    if (is_word("W")) {
+      unsupported(peek().at, "the weak until W is not supported: write (a U b) || G a");
+    }
+    if (is_symbol("-->")) {
+      unsupported(peek().at, "leads-to (-->) is not supported: write G (a -> F b)");
+    }
+    if (!is_word("U") && !is_word("R")) return left;
+    const Formula::Kind kind = is_word("U") ? Formula::Kind::Until : Formula::Kind::Release;
+    auto f = make(kind, take().at);
+    f->bound = temporal_bound();
+    f->operands.push_back(std::move(left));
+    f->operands.push_back(temporal_binary());
+    return f;
+  }
+
+  // a -> b, a <-> b (also =>, imply, <=>): right-associative.
+  std::unique_ptr<Formula> implication() {
     const DepthGuard guard(*this);
     std::unique_ptr<Formula> left = disjunction();
-    if (!is_symbol("->")) return left;
-    auto f = make(Formula::Kind::Implies, take().at);
+    Formula::Kind kind;
+    if (is_any({"->", "=>"}, {"imply"})) {
+      kind = Formula::Kind::Implies;
+    } else if (is_any({"<->", "<=>"}, {})) {
+      kind = Formula::Kind::Iff;
+    } else {
+      return left;
+    }
+    auto f = make(kind, take().at);
     f->operands.push_back(std::move(left));
-    f->operands.push_back(implies());
+    f->operands.push_back(implication());
     return f;
   }
 
   std::unique_ptr<Formula> disjunction() {
+    ChainDepth chain{*this};
     std::unique_ptr<Formula> left = conjunction();
-    while (is_symbol("||")) {
+    while (is_any({"||", "|"}, {"or"})) {
+      deepen(chain.levels);
       auto f = make(Formula::Kind::Or, take().at);
       f->operands.push_back(std::move(left));
       f->operands.push_back(conjunction());
@@ -336,32 +497,24 @@ class Parser {
   }
 
   std::unique_ptr<Formula> conjunction() {
-    std::unique_ptr<Formula> left = until();
-    while (is_symbol("&&")) {
+    ChainDepth chain{*this};
+    std::unique_ptr<Formula> left = unary();
+    while (is_any({"&&", "&"}, {"and"})) {
+      deepen(chain.levels);
       auto f = make(Formula::Kind::And, take().at);
       f->operands.push_back(std::move(left));
-      f->operands.push_back(until());
+      f->operands.push_back(unary());
       left = std::move(f);
     }
     return left;
   }
 
-  std::unique_ptr<Formula> until() {
-    const DepthGuard guard(*this);
-    std::unique_ptr<Formula> left = unary();
-    if (!is_word("U") && !is_word("R")) return left;
-    const Formula::Kind kind = is_word("U") ? Formula::Kind::Until : Formula::Kind::Release;
-    auto f = make(kind, take().at);
-    f->bound = temporal_bound();
-    f->operands.push_back(std::move(left));
-    f->operands.push_back(until());
-    return f;
-  }
-
+  // ! phi (also not), and the prefix temporal operators, whose operand is the longest boolean
+  // expression that follows (no U or R outside parentheses).
   std::unique_ptr<Formula> unary() {
     const DepthGuard guard(*this);
     Formula::Kind kind = Formula::Kind::True;
-    if (is_symbol("!")) {
+    if (is_any({"!"}, {"not"})) {
       kind = Formula::Kind::Not;
     } else if (is_word("X")) {
       kind = Formula::Kind::Next;
@@ -376,14 +529,18 @@ class Parser {
     if (kind == Formula::Kind::Finally || kind == Formula::Kind::Globally) {
       f->bound = temporal_bound();
     }
-    f->operands.push_back(unary());
+    f->operands.push_back(kind == Formula::Kind::Not ? unary() : implication());
     return f;
   }
 
-  // `[a,b]`, `{k}`, `<=T`, `<=#k`, or nothing.
+  // `[a,b]`, `[<=T]`, `[#<=k]`, `{k}`, `<=T`, `<=#k`, or nothing.
   Bound temporal_bound() {
     Bound b;
-    if (symbol("[")) {
+    if (is_symbol("[") && (is_symbol("#", 1) || is_symbol("<=", 1))) {
+      take();
+      b = run_bound();
+      expect("]", "to close the bound");
+    } else if (symbol("[")) {
       b.kind = Bound::Kind::Time;
       b.low = value("the interval's lower bound");
       expect(",", "between the interval's bounds");
@@ -409,8 +566,8 @@ class Parser {
 
   static bool starts_expression_operator(const Token& t) {
     if (t.kind != TokenKind::Symbol) return false;
-    static constexpr std::string_view kOperators[] = {"+",  "-", "*",  "/",  "%", "<",
-                                                      "<=", ">", ">=", "==", "!="};
+    static constexpr std::string_view kOperators[] = {"+",  "-", "*",  "/",  "%",  "<",
+                                                      "<=", ">", ">=", "==", "!=", "="};
     for (std::string_view op : kOperators) {
       if (t.text == op) return true;
     }
@@ -458,9 +615,9 @@ class Parser {
     const DepthGuard guard(*this);
     std::unique_ptr<Expr> left = additive(std::move(first));
     static constexpr std::pair<std::string_view, Expr::Kind> kComparisons[] = {
-        {"<", Expr::Kind::Less},    {"<=", Expr::Kind::LessEqual},
-        {">", Expr::Kind::Greater}, {">=", Expr::Kind::GreaterEqual},
-        {"==", Expr::Kind::Equal},  {"!=", Expr::Kind::NotEqual}};
+        {"<", Expr::Kind::Less},          {"<=", Expr::Kind::LessEqual}, {">", Expr::Kind::Greater},
+        {">=", Expr::Kind::GreaterEqual}, {"==", Expr::Kind::Equal},     {"=", Expr::Kind::Equal},
+        {"!=", Expr::Kind::NotEqual}};
     for (const auto& [text, kind] : kComparisons) {
       if (is_symbol(text)) {
         const bipc::Location at = take().at;
@@ -471,8 +628,10 @@ class Parser {
   }
 
   std::unique_ptr<Expr> additive(std::unique_ptr<Expr> first) {
+    ChainDepth chain{*this};
     std::unique_ptr<Expr> left = multiplicative(std::move(first));
     while (is_symbol("+") || is_symbol("-")) {
+      deepen(chain.levels);
       const Expr::Kind kind = peek().text == "+" ? Expr::Kind::Add : Expr::Kind::Subtract;
       const bipc::Location at = take().at;
       left = binary(kind, at, std::move(left), multiplicative(nullptr));
@@ -481,8 +640,10 @@ class Parser {
   }
 
   std::unique_ptr<Expr> multiplicative(std::unique_ptr<Expr> first) {
+    ChainDepth chain{*this};
     std::unique_ptr<Expr> left = first ? std::move(first) : prefix();
     while (is_symbol("*") || is_symbol("/") || is_symbol("%")) {
+      deepen(chain.levels);
       const Expr::Kind kind = peek().text == "*"   ? Expr::Kind::Multiply
                               : peek().text == "/" ? Expr::Kind::Divide
                                                    : Expr::Kind::Modulo;
@@ -512,7 +673,13 @@ class Parser {
       expect(")", "to close the parenthesis");
       return inner;
     }
+    if (t.kind == TokenKind::Label) return label();
     if (t.kind != TokenKind::Name) fail("a formula or an expression");
+    const bool builtin =
+        t.text == "deadlock" || t.text == "timelock" || t.text == "time" || t.text == "init";
+    if (is_reserved(t) && !builtin && !is_symbol(".", 1)) {
+      fail("a formula or an expression ('" + t.text + "' is an operator)");
+    }
     if (t.text == "true" || t.text == "false") {
       auto e = make_expr(Expr::Kind::Bool, t.at);
       e->boolean = take().text == "true";
@@ -521,7 +688,38 @@ class Parser {
     if (is_symbol("(", 1)) return call();
     auto e = make_expr(Expr::Kind::Name, t.at);
     e->path = path();
+    mark_builtin(*e);
     return e;
+  }
+
+  // PRISM's built-in labels: "deadlock" and "init".
+  std::unique_ptr<Expr> label() {
+    const Token& t = peek();
+    if (t.text != "deadlock" && t.text != "init") {
+      diagnostics_.error(t.at, "unknown label \"" + t.text +
+                                   "\": the labels are \"deadlock\" and \"init\"; name other "
+                                   "states by their predicates (Atom.place, Atom.x == 3)");
+      throw Abandon{};
+    }
+    auto e = make_expr(Expr::Kind::Name, t.at);
+    e->path = take().text;
+    mark_builtin(*e);
+    return e;
+  }
+
+  // The language's own names: the global time, the initial state, deadlock and time-lock.
+  static void mark_builtin(Expr& e) {
+    static constexpr std::pair<std::string_view, Reference::Kind> kBuiltins[] = {
+        {"time", Reference::Kind::Time},
+        {"init", Reference::Kind::Initial},
+        {"deadlock", Reference::Kind::Deadlock},
+        {"timelock", Reference::Kind::Timelock}};
+    for (const auto& [name, kind] : kBuiltins) {
+      if (e.path == name) {
+        e.reference.kind = kind;
+        e.is_bool = kind != Reference::Kind::Time;
+      }
+    }
   }
 
   // A dotted path: Channel.id_channel, Syst.node3.status.
@@ -567,28 +765,41 @@ class Parser {
     return e;
   }
 
-  std::vector<Token> tokens_;
+  detail::TokenStream& tokens_;
   bipc::Diagnostics& diagnostics_;
-  std::size_t pos_ = 0;
   std::size_t statement_start_ = 0;
   int depth_ = 0;
 };
 
+/// `NAME=v` and `NAME=v1,v2,...` as the list `NAME={v1,v2,...}`; ranges and braced lists as
+/// written.
+std::string braced_values(const std::string& text) {
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos) return text;
+  const std::size_t first = text.find_first_not_of(" \t", equals + 1);
+  if (first == std::string::npos || text[first] == '{' ||
+      text.find(':', equals) != std::string::npos) {
+    return text;
+  }
+  return text.substr(0, first) + "{" + text.substr(first) + "}";
+}
+
 /// Reads `NAME=values` as the declaration `param NAME=values`.
-std::optional<Declaration> given_parameter(const std::string& text, std::uint32_t source,
+std::optional<Declaration> given_parameter(const std::string& written, std::uint32_t source,
                                            bipc::Diagnostics& diagnostics) {
-  std::vector<Token> tokens = detail::lex_properties(text, source, diagnostics);
+  const std::string text = braced_values(written);
+  detail::TokenStream tokens(text, source, diagnostics);
   Token keyword;
   keyword.kind = TokenKind::Name;
   keyword.text = "param";
-  keyword.at = tokens.front().at;
-  tokens.insert(tokens.begin(), keyword);
+  keyword.at = tokens.peek().at;
+  tokens.push_front(keyword);
   const std::size_t errors = diagnostics.error_count();
-  PropertyFile given = Parser(std::move(tokens), diagnostics).file();
+  PropertyFile given = Parser(tokens, diagnostics).file();
   if (diagnostics.error_count() != errors) return std::nullopt;
   if (given.declarations.size() != 1 || !given.queries.empty()) {
     diagnostics.error({source, 1, 1},
-                      "expected one parameter: NAME=start:stop:step or NAME={v1,...}");
+                      "expected one parameter: NAME=start:stop:step, NAME=v1,v2,... or NAME=v");
     return std::nullopt;
   }
   return std::move(given.declarations.front());
@@ -620,8 +831,8 @@ ParsedProperties parse_properties(std::string_view text, const std::string& path
                                   const std::vector<std::string>& parameters) {
   ParsedProperties parsed;
   const std::uint32_t file = parsed.sources.add(path);
-  std::vector<Token> tokens = detail::lex_properties(text, file, parsed.diagnostics);
-  parsed.file = Parser(std::move(tokens), parsed.diagnostics).file();
+  detail::TokenStream tokens(text, file, parsed.diagnostics);
+  parsed.file = Parser(tokens, parsed.diagnostics).file();
   if (parsed.ok()) give_parameters(parameters, parsed);
   if (parsed.ok()) detail::check_properties(parsed.file, parsed.diagnostics);
   parsed.diagnostics.sort_by_location();

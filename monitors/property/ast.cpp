@@ -5,8 +5,8 @@ namespace smcbip::monitors {
 
 namespace {
 
-// Binding strength, loosest first; operands looser than their operator get parentheses.
-enum FormulaPrecedence : int { kImplies = 1, kOr, kAnd, kUntil, kUnary, kFormulaAtom };
+// Binding strength of expression operators, loosest first; operands looser than their operator
+// get parentheses.
 enum ExprPrecedence : int { kComparison = 1, kAdditive, kMultiplicative, kNegate, kPrimary };
 
 int precedence(const Expr& e) {
@@ -65,43 +65,26 @@ std::string parenthesised(std::string text, bool needed) {
   return needed ? "(" + text + ")" : text;
 }
 
-int precedence(const Formula& f) {
-  switch (f.kind) {
-    case Formula::Kind::Implies:
-      return kImplies;
-    case Formula::Kind::Or:
-      return kOr;
-    case Formula::Kind::And:
-      return kAnd;
-    case Formula::Kind::Until:
-    case Formula::Kind::Release:
-      return kUntil;
-    case Formula::Kind::Not:
-    case Formula::Kind::Next:
-    case Formula::Kind::Finally:
-    case Formula::Kind::Globally:
-      return kUnary;
-    default:
-      return kFormulaAtom;
-  }
+bool is_leaf(const Formula& f) {
+  return f.kind == Formula::Kind::True || f.kind == Formula::Kind::False ||
+         f.kind == Formula::Kind::Atom;
 }
 
-// The operand of a unary operator: a compound atomic predicate gets parentheses for the reader
-// (`F[0,10] (x > 2)`), though the grammar would read it the same without.
+// The operand of a prefix operator: in parentheses unless it is a constant or a predicate
+// without operators (`!deadlock`, `F[0,10] done`, `G (x > 2)`, `F (a && b)`).
 std::string unary_operand(const Formula& operand) {
-  const bool compound_atom =
-      operand.kind == Formula::Kind::Atom && precedence(*operand.atom) < kPrimary;
-  return parenthesised(to_string(operand), compound_atom || precedence(operand) < kUnary);
+  const bool simple = operand.kind != Formula::Kind::Atom ? is_leaf(operand)
+                                                          : precedence(*operand.atom) == kPrimary;
+  return parenthesised(to_string(operand), !simple);
 }
 
-std::string binary(const Formula& f, const char* op, bool right_associative) {
-  const int p = precedence(f);
+// The operands of a binary operator: in parentheses unless they are predicates or constants,
+// whose operators all bind tighter than the formula's.
+std::string binary(const Formula& f, const char* op) {
   const Formula& left = *f.operands[0];
   const Formula& right = *f.operands[1];
-  const int pl = precedence(left), pr = precedence(right);
-  return parenthesised(to_string(left), pl < p || (pl == p && right_associative)) + " " + op +
-         to_string(f.bound) + " " +
-         parenthesised(to_string(right), pr < p || (pr == p && !right_associative));
+  return parenthesised(to_string(left), !is_leaf(left)) + " " + op + to_string(f.bound) + " " +
+         parenthesised(to_string(right), !is_leaf(right));
 }
 
 const char* unit_suffix(TimeUnit unit) {
@@ -209,15 +192,17 @@ std::string to_string(const Formula& f) {
     case Formula::Kind::Globally:
       return "G" + to_string(f.bound) + " " + unary_operand(*f.operands[0]);
     case Formula::Kind::And:
-      return binary(f, "&&", false);
+      return binary(f, "&&");
     case Formula::Kind::Or:
-      return binary(f, "||", false);
+      return binary(f, "||");
     case Formula::Kind::Implies:
-      return binary(f, "->", true);
+      return binary(f, "->");
+    case Formula::Kind::Iff:
+      return binary(f, "<->");
     case Formula::Kind::Until:
-      return binary(f, "U", true);
+      return binary(f, "U");
     case Formula::Kind::Release:
-      return binary(f, "R", true);
+      return binary(f, "R");
   }
   return "";
 }
@@ -236,13 +221,79 @@ std::string to_string(const Query& q) {
       return std::string("P") + comparison_text(q.comparison) + threshold + " [ " +
              to_string(*q.formula) + " ]";
     }
+    case Query::Kind::Compare:
+      return "Pr[" + run_bound(q.run) + "](" + to_string(*q.formula) + ") " +
+             comparison_text(q.comparison) + " Pr[" + run_bound(q.other_run) + "](" +
+             to_string(*q.other) + ")";
+    case Query::Kind::Simulate: {
+      std::string out = "simulate [" + run_bound(q.run) + "; " + to_string(q.runs) + "] { ";
+      for (std::size_t i = 0; i < q.series.size(); ++i) {
+        out += (i == 0 ? "" : ", ") + to_string(*q.series[i]);
+      }
+      return out + " }";
+    }
+    case Query::Kind::Invariant:
+      return "A[] " + to_string(*q.formula);
+    case Query::Kind::Reachable:
+      return "E<> " + to_string(*q.formula);
     case Query::Kind::Expectation: {
-      const std::string observed = (q.maximum ? "max: " : "min: ") + to_string(*q.observed);
+      const std::string observed =
+          std::string(observation_keyword(q.observe)) + ": " + to_string(*q.observed);
       if (!q.pr_form) return "E=? [ " + observed + " ]";
       return "E[" + run_bound(q.run) + "; " + to_string(q.runs) + "](" + observed + ")";
     }
   }
   return "";
+}
+
+namespace {
+
+void names_in(const Value& v, std::set<std::string>& names) {
+  if (v.is_name()) names.insert(v.name);
+}
+void names_in(const Bound& b, std::set<std::string>& names) {
+  names_in(b.low, names);
+  names_in(b.high, names);
+}
+void names_in(const Expr& e, std::set<std::string>& names) {
+  if (e.kind == Expr::Kind::Name) names.insert(e.path);
+  for (const auto& operand : e.operands) names_in(*operand, names);
+}
+void names_in(const Formula& f, std::set<std::string>& names) {
+  names_in(f.bound, names);
+  if (f.atom) names_in(*f.atom, names);
+  for (const auto& operand : f.operands) names_in(*operand, names);
+}
+
+}  // namespace
+
+std::set<std::string> names_read(const Query& q) {
+  std::set<std::string> names;
+  names_in(q.run, names);
+  names_in(q.other_run, names);
+  names_in(q.threshold, names);
+  names_in(q.runs, names);
+  if (q.formula) names_in(*q.formula, names);
+  if (q.other) names_in(*q.other, names);
+  if (q.observed) names_in(*q.observed, names);
+  for (const auto& e : q.series) names_in(*e, names);
+  return names;
+}
+
+const char* observation_keyword(Observation observe) {
+  switch (observe) {
+    case Observation::Max:
+      return "max";
+    case Observation::Min:
+      return "min";
+    case Observation::Last:
+      return "last";
+    case Observation::Integral:
+      return "int";
+    case Observation::Count:
+      return "count";
+  }
+  return "max";
 }
 
 std::string to_string(const Declaration& d) {

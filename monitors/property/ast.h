@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -48,10 +49,21 @@ struct Reference {
     Constant,      // index: PropertyFile::declarations
     Connector,     // index: System::connectors (fired)
     InternalPort,  // atom, port of its type (fired)
+    Time,          // `time`: the global time, in the model's time unit
+    Initial,       // `"init"`: the run's first state
+    Deadlock,      // `deadlock`: nothing is enabled and nothing ever will be
+    Timelock,      // `timelock`: time cannot progress
   } kind = Kind::Unresolved;
   std::uint32_t atom = 0;
   std::uint32_t index = 0;
 };
+
+/// Whether a reference is one of the language's own names (time, init, deadlock, timelock),
+/// which the monitor answers itself rather than the model or the trace.
+inline bool is_builtin(const Reference& r) {
+  return r.kind == Reference::Kind::Time || r.kind == Reference::Kind::Initial ||
+         r.kind == Reference::Kind::Deadlock || r.kind == Reference::Kind::Timelock;
+}
 
 /// A state expression (the inside of an atomic predicate): arithmetic, comparisons and the
 /// functions PROPERTIES.md allows over data, places and clocks of the model.
@@ -94,6 +106,7 @@ struct Formula {
     And,
     Or,
     Implies,
+    Iff,
     Next,
     Finally,
     Globally,
@@ -109,24 +122,37 @@ struct Formula {
 /// How a query compares the probability with its threshold (Hypothesis).
 enum class Comparison : std::uint8_t { GreaterEqual, Greater, LessEqual, Less };
 
+/// What an expectation query observes of each run: the maximum or minimum of its expression
+/// over the run's states, its value at the run's bound, its time integral over the run, or how
+/// many steps fired an interaction.
+enum class Observation : std::uint8_t { Max, Min, Last, Integral, Count };
+
 /// One query of a property file.
 struct Query {
   enum class Kind : std::uint8_t {
     Estimate,     // P=? [ phi ], Pr[<=T](phi)
     Hypothesis,   // P>=theta [ phi ], Pr[<=T](phi) >= theta
     Expectation,  // E[<=T; N](max: expr), E=? [ max: expr ]
+    Invariant,    // A[] phi: phi holds in every reachable state (exact, not statistical)
+    Reachable,    // E<> phi: phi holds in some reachable state (exact, not statistical)
+    Compare,      // Pr[<=T](phi) >= Pr[<=T2](psi): which of two probabilities is larger
+    Simulate,     // simulate [<=T; N] { e1, e2 }: N trajectories of the expressions
   } kind = Kind::Estimate;
   Location at;
   Bound run;             // [<=T] or [#<=K]; Kind::None: the formula's horizon bounds the run
   bool pr_form = false;  // written Pr[...](...), E[...](...) (UPPAAL) rather than P/E...[ ]
   Comparison comparison = Comparison::GreaterEqual;
   Value threshold;                   // Hypothesis
-  std::unique_ptr<Formula> formula;  // Estimate, Hypothesis
-  // Expectation: the runs' number, whether the maximum or minimum over each run is taken, and
-  // the expression.
-  Value runs;
-  bool maximum = true;
+  std::unique_ptr<Formula> formula;  // Estimate, Hypothesis, Invariant, Reachable (phi)
+  // Expectation: the runs' number, what is observed of each run, and the expression.
+  Value runs;  // also Simulate
+  Observation observe = Observation::Max;
   std::unique_ptr<Expr> observed;
+  // Compare: the second probability's run bound and formula (`comparison` relates the two).
+  Bound other_run;
+  std::unique_ptr<Formula> other;
+  // Simulate: the expressions whose values along each run are written.
+  std::vector<std::unique_ptr<Expr>> series;
 };
 
 /// `const NAME = value` or `param NAME = start:stop:step` / `{v1, v2, ...}`.
@@ -145,15 +171,24 @@ struct PropertyFile {
   std::vector<Query> queries;
 };
 
-/// The normalised text of a formula or expression: one space around binary operators,
-/// parentheses exactly where precedence needs them, bounds as `[a,b]` / `{k}`.
+/// The normalised text of a formula or expression: one space around binary operators, bounds as
+/// `[a,b]` / `{k}`. A formula is fully parenthesised: every operand that is not an atomic
+/// predicate, and every compound predicate under a prefix operator, is in parentheses, so the
+/// reader needs no precedence table; inside predicates, parentheses stand where precedence needs
+/// them.
 std::string to_string(const Expr& expr);
 std::string to_string(const Formula& formula);
 std::string to_string(const Bound& bound);
 std::string to_string(const Value& value);
 /// The normalised query, in the form it was written: `P=? [ phi ]`, `P>=0.9 [ phi ]`,
-/// `Pr[<=100](phi)`, `Pr[<=100](phi) >= 0.9`, `E[<=100; 50](max: expr)`.
+/// `Pr[<=100](phi)`, `Pr[<=100](phi) >= 0.9`, `E[<=100; 50](max: expr)`, `A[] phi`, `E<> phi`.
 std::string to_string(const Query& query);
 std::string to_string(const Declaration& declaration);
+/// The names a query reads, where a constant or parameter may stand: its bounds, threshold,
+/// run count, and the names of its predicates and expressions (dotted paths too).
+std::set<std::string> names_read(const Query& query);
+
+/// The keyword of an observation: `max`, `min`, `last`, `int`, `count`.
+const char* observation_keyword(Observation observe);
 
 }  // namespace smcbip::monitors

@@ -78,9 +78,41 @@ class Resolver {
       case Expr::Kind::GreaterEqual:
         e.is_bool = true;
         return numbers(e);
+      case Expr::Kind::Multiply:
+      case Expr::Kind::Divide:
+      case Expr::Kind::Modulo:
+        return numbers(e) && linear(e);
       default:  // arithmetic and abs, min, max
         return numbers(e);
     }
+  }
+
+  /// Whether the model has clocks: without, time bounds and `time` measure nothing it shows.
+  bool timed_model() const {
+    for (const bipc::ir::AtomInstance& atom : system_.atoms) {
+      if (!system_.atom_types[atom.type].clocks.empty()) return true;
+    }
+    return false;
+  }
+
+  void untimed_bound(const Bound& b) {
+    if (b.kind != Bound::Kind::Time) return;
+    fail(b.high.at,
+         "the model has no clocks, so a time bound measures nothing it shows: bound "
+         "by steps instead (F{k} phi or F[#<=k] phi, Pr[#<=K](...))");
+  }
+  void untimed_formula(const Formula& f) {
+    untimed_bound(f.bound);
+    if (f.atom) untimed_expression(*f.atom);
+    for (const auto& operand : f.operands) untimed_formula(*operand);
+  }
+  void untimed_expression(const Expr& e) {
+    if (e.kind == Expr::Kind::Name && e.reference.kind == Reference::Kind::Time) {
+      fail(e.at,
+           "the model has no clocks, so 'time' measures nothing it shows: count steps "
+           "with a step bound instead (F{k} phi)");
+    }
+    for (const auto& operand : e.operands) untimed_expression(*operand);
   }
 
   /// A condition: a predicate or a boolean term.
@@ -114,6 +146,7 @@ class Resolver {
   }
 
   bool name(Expr& e) {
+    if (is_builtin(e.reference)) return true;
     const std::string path = below_root(e.path);
     const std::size_t dot = path.rfind('.');
     if (dot == std::string::npos) {
@@ -197,6 +230,42 @@ class Resolver {
     return fail(e.at, "fired(" + e.path + "): no connector or atom port of that name");
   }
 
+  /// Whether `e` grows with time between steps: it reads a clock or the global time.
+  static bool grows(const Expr& e) {
+    if (e.kind == Expr::Kind::Name) {
+      return e.reference.kind == Reference::Kind::Clock ||
+             e.reference.kind == Reference::Kind::Time;
+    }
+    for (const auto& operand : e.operands) {
+      if (grows(*operand)) return true;
+    }
+    return false;
+  }
+
+  /// Clocks are read continuously, so what reads them must be linear in them: a product of two
+  /// clocks, a division by a clock or a remainder of one would change truth between the
+  /// crossings the monitor computes.
+  bool linear(const Expr& e) {
+    const bool left = grows(*e.operands[0]), right = grows(*e.operands[1]);
+    if (e.kind == Expr::Kind::Multiply && left && right) {
+      return fail(e.at, "'" + to_string(e) +
+                            "' multiplies two values that grow with time "
+                            "(clocks or time); predicates over clocks must be linear in them");
+    }
+    if (e.kind == Expr::Kind::Divide && right) {
+      return fail(e.at, "'" + to_string(e) +
+                            "' divides by a value that grows with time "
+                            "(a clock or time); predicates over clocks must be linear in them");
+    }
+    if (e.kind == Expr::Kind::Modulo && (left || right)) {
+      return fail(e.at,
+                  "'" + to_string(e) +
+                      "' takes a remainder of a value that grows with "
+                      "time (a clock or time); predicates over clocks must be linear in them");
+    }
+    return true;
+  }
+
   bool fail(bipc::Location at, const std::string& message) {
     diagnostics_.error(at, message);
     return false;
@@ -212,9 +281,23 @@ class Resolver {
 void resolve_names(PropertyFile& file, const bipc::ir::System& system,
                    bipc::Diagnostics& diagnostics) {
   Resolver resolver(file, system, diagnostics);
+  const bool timed = resolver.timed_model();
   for (Query& q : file.queries) {
     if (q.formula) resolver.formula(*q.formula);
-    if (q.observed) resolver.number(*q.observed, "the observed expression");
+    if (q.other) resolver.formula(*q.other);
+    if (q.observed && q.observe == Observation::Count) {
+      resolver.condition(*q.observed, "what count: counts");
+    } else if (q.observed) {
+      resolver.number(*q.observed, "the observed expression");
+    }
+    for (auto& e : q.series) resolver.expression(*e);
+    if (timed) continue;
+    resolver.untimed_bound(q.run);
+    resolver.untimed_bound(q.other_run);
+    if (q.formula) resolver.untimed_formula(*q.formula);
+    if (q.other) resolver.untimed_formula(*q.other);
+    if (q.observed) resolver.untimed_expression(*q.observed);
+    for (const auto& e : q.series) resolver.untimed_expression(*e);
   }
 }
 

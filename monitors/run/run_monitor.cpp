@@ -24,6 +24,22 @@ double EngineState::value(const Expr& name) const {
   }
 }
 
+double EngineState::slope(const Expr& name) const {
+  const Reference& r = name.reference;
+  return r.kind == Reference::Kind::Clock ? state_.clock_slope(r.atom, r.index) : 0;
+}
+
+RunEnd monitor_end(engines::RunEnd end) {
+  switch (end) {
+    case engines::RunEnd::Deadlock:
+      return RunEnd::Deadlock;
+    case engines::RunEnd::Timelock:
+      return RunEnd::Timelock;
+    default:
+      return RunEnd::Cut;
+  }
+}
+
 bool EngineState::fired(const Expr& fired) const {
   const Reference& r = fired.reference;
   using Fired = engines::StepInfo::Fired;
@@ -41,7 +57,7 @@ bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView
 
 void RunMonitor::finish(engines::RunEnd end, int, const std::string&) {
   // A run stopped once the verdict was known needs no end; any other stop cuts it short.
-  monitor_.end(end == engines::RunEnd::Deadlock ? RunEnd::Deadlock : RunEnd::Cut);
+  monitor_.end(monitor_end(end));
 }
 
 }  // namespace smcbip::monitors

@@ -11,6 +11,10 @@
 
 namespace smcbip::monitors {
 
+/// How the monitors read the end of an engine's run: a deadlock and a time-lock decide, the
+/// other ends cut the run short.
+RunEnd monitor_end(engines::RunEnd end);
+
 /// A state of a run as predicates read it: names resolved against the model (Expr::reference).
 class EngineState final : public StateView {
  public:
@@ -18,6 +22,7 @@ class EngineState final : public StateView {
       : step_(step), state_(state) {}
   double value(const Expr& name) const override;
   bool fired(const Expr& fired) const override;
+  double slope(const Expr& name) const override;
 
  private:
   const engines::StepInfo& step_;
@@ -57,7 +62,7 @@ class RunCriticalBound final : public engines::RunObserver {
     return !bound_.step(EngineState(step, state), step.time);
   }
   void finish(engines::RunEnd end, int, const std::string&) override {
-    bound_.end(end == engines::RunEnd::Deadlock ? RunEnd::Deadlock : RunEnd::Cut);
+    bound_.end(monitor_end(end));
   }
 
   /// The verdict for `value` of the parameter, once the run is over.
@@ -79,6 +84,9 @@ class RunExtremum final : public engines::RunObserver {
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
     return extremum_.step(EngineState(step, state), step.time,
                           static_cast<std::int64_t>(step.step));
+  }
+  void finish(engines::RunEnd end, int, const std::string&) override {
+    extremum_.end(monitor_end(end));
   }
   std::optional<double> value() const { return extremum_.value(); }
   void reset() { extremum_.reset(); }

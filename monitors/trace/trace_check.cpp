@@ -36,10 +36,27 @@ struct TraceName {
   std::string place;  // Place
 };
 
-/// One step of a trace as a state: its data, marked places and fired interaction.
+/// The clocks a trace's header declares: nanoseconds per unit of each.
+using TraceClocks = std::unordered_map<std::string, double>;
+
+/// One step of a trace as a state: its data, marked places and fired interaction; the data its
+/// header declares clocks grow at their rates after the step.
 class StepState final : public StateView {
  public:
-  explicit StepState(const std::unordered_map<const Expr*, TraceName>& names) : names_(names) {}
+  StepState(const std::unordered_map<const Expr*, TraceName>& names, const TraceClocks& clocks,
+            double ticks_per_ms)
+      : names_(names), clocks_(clocks), ticks_per_ms_(ticks_per_ms) {}
+
+  double slope(const Expr& name) const override {
+    const TraceName& n = names_.at(&name);
+    if (n.kind != TraceName::Kind::Data) return 0;
+    const auto clock = clocks_.find(n.key);
+    if (clock == clocks_.end()) return 0;
+    const Json* rate = member(member(&line_, "rates"), n.key);
+    const double r = rate != nullptr && rate->is_number() ? rate->get<double>() : 1.0;
+    // Units per millisecond, then per tick.
+    return r * 1e6 / clock->second / ticks_per_ms_;
+  }
 
   void read(Json line) { line_ = std::move(line); }
 
@@ -74,6 +91,8 @@ class StepState final : public StateView {
   }
 
   const std::unordered_map<const Expr*, TraceName>& names_;
+  const TraceClocks& clocks_;
+  double ticks_per_ms_;
   Json line_;
 };
 
@@ -87,10 +106,18 @@ class TraceReader {
     std::string text;
     while (std::getline(in_, text)) {
       ++line_;
-      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+      if (text.find_first_not_of(" \t\r") == std::string::npos) {
+        ++blank_lines_;
+        continue;
+      }
       if (!end_.empty()) fail("nothing may follow the end line");
       Json line = Json::parse(text, nullptr, /*allow_exceptions=*/false);
       if (line.is_discarded() || !line.is_object()) fail("expected a JSON object on one line");
+      if (line.contains("header")) {
+        if (line_ != 1 + blank_lines_) fail("the header must be the first line");
+        read_header(line["header"]);
+        continue;
+      }
       if (line.contains("end")) {
         if (!line["end"].is_string()) fail("expected \"end\" to be a string");
         end_ = line["end"].get<std::string>();
@@ -103,6 +130,7 @@ class TraceReader {
   }
 
   const std::string& end() const { return end_; }
+  const TraceClocks& clocks() const { return clocks_; }
   [[noreturn]] void fail(const std::string& message) const {
     throw TraceError(path_, line_, message);
   }
@@ -120,10 +148,27 @@ class TraceReader {
     }
   }
 
+  /// The header's clocks: `"clocks": {"ROOT.a.x": {"unit_ns": 1000000}, ...}`.
+  void read_header(const Json& header) {
+    if (!header.is_object()) fail("expected \"header\" to be an object");
+    if (!header.contains("clocks")) return;
+    const Json& clocks = header["clocks"];
+    if (!clocks.is_object()) fail("expected the header's \"clocks\" to be an object");
+    for (const auto& [name, clock] : clocks.items()) {
+      const Json* unit =
+          clock.is_object() && clock.contains("unit_ns") ? &clock["unit_ns"] : nullptr;
+      if (unit == nullptr || !unit->is_number() || !(unit->get<double>() > 0)) {
+        fail("expected clock \"" + name + "\" to give its unit as \"unit_ns\" > 0");
+      }
+      clocks_[name] = unit->get<double>();
+    }
+  }
+
   std::istream& in_;
   std::string path_;
-  std::size_t line_ = 0;
+  std::size_t line_ = 0, blank_lines_ = 0;
   std::string end_;
+  TraceClocks clocks_;
 };
 
 /// Binds the names of the file's predicates to the keys of the first step.
@@ -141,7 +186,9 @@ class NameBinder {
 
   void expression(const Expr& e) {
     for (const auto& operand : e.operands) expression(*operand);
-    if (e.kind != Expr::Kind::Name || constants_.contains(e.path)) return;
+    if (e.kind != Expr::Kind::Name || is_builtin(e.reference) || constants_.contains(e.path)) {
+      return;
+    }
     std::vector<TraceName> found;
     for (const std::string& key : data_) {
       if (same_path(key, e.path)) found.push_back({TraceName::Kind::Data, key, ""});
@@ -178,29 +225,6 @@ class NameBinder {
   std::unordered_map<const Expr*, TraceName> names_;
 };
 
-/// The names a query reads (of bounds, thresholds and predicates).
-void names_in(const Expr& e, std::set<std::string>& names) {
-  if (e.kind == Expr::Kind::Name) names.insert(e.path);
-  for (const auto& operand : e.operands) names_in(*operand, names);
-}
-void names_in(const Bound& b, std::set<std::string>& names) {
-  for (const Value* v : {&b.low, &b.high}) {
-    if (v->is_name()) names.insert(v->name);
-  }
-}
-void names_in(const Formula& f, std::set<std::string>& names) {
-  names_in(f.bound, names);
-  if (f.atom) names_in(*f.atom, names);
-  for (const auto& operand : f.operands) names_in(*operand, names);
-}
-std::set<std::string> names_in(const Query& q) {
-  std::set<std::string> names;
-  names_in(q.run, names);
-  if (q.formula) names_in(*q.formula, names);
-  if (q.observed) names_in(*q.observed, names);
-  return names;
-}
-
 /// Every combination of the values of the parameters `used` names, added to `base`.
 std::vector<Bindings> combinations(const std::map<std::string, std::vector<double>>& parameters,
                                    const std::set<std::string>& used, const Bindings& base) {
@@ -233,7 +257,7 @@ std::optional<std::string> swept_parameter(
     const Query& q, const std::map<std::string, std::vector<double>>& parameters) {
   if (!q.formula || q.run.kind != Bound::Kind::None) return std::nullopt;
   std::optional<std::string> swept;
-  for (const std::string& name : names_in(q)) {
+  for (const std::string& name : names_read(q)) {
     if (!parameters.contains(name)) continue;
     if (swept) return std::nullopt;
     swept = name;
@@ -271,11 +295,25 @@ std::map<std::string, std::vector<double>> parameter_values(const PropertyFile& 
 }
 
 std::vector<Bindings> query_bindings(const PropertyFile& file, const Query& query) {
-  return combinations(parameter_values(file), names_in(query), constant_values(file));
+  return combinations(parameter_values(file), names_read(query), constant_values(file));
 }
 
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
                         const TimeScale& scale, bipc::Diagnostics& diagnostics, Reading reading) {
+  for (const Query& q : file.queries) {
+    if (q.kind == Query::Kind::Compare || q.kind == Query::Kind::Simulate) {
+      diagnostics.error(q.at,
+                        "a comparison of two probabilities or a simulate query needs runs "
+                        "of a model: use smcbip check");
+    }
+    if (q.kind == Query::Kind::Invariant || q.kind == Query::Kind::Reachable) {
+      diagnostics.error(q.at, std::string(q.kind == Query::Kind::Invariant ? "A[]" : "E<>") +
+                                  " is a question over every reachable state, which one recorded "
+                                  "run cannot answer: the invariant prover (smcbip prove, to "
+                                  "come) answers it");
+    }
+  }
+  if (diagnostics.has_errors()) return {};
   TraceReader reader(in, path);
   std::optional<Json> line = reader.next();
   if (!line) reader.fail("expected at least one step");
@@ -311,7 +349,7 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
       }
       continue;
     }
-    for (const Bindings& bindings : combinations(parameters, names_in(q), constants)) {
+    for (const Bindings& bindings : combinations(parameters, names_read(q), constants)) {
       Judge& judge = judges.emplace_back();
       judge.result.query = i;
       for (const auto& [name, value] : bindings) {
@@ -327,7 +365,7 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   }
 
   TraceReport report;
-  StepState state(names);
+  StepState state(names, reader.clocks(), scale.ticks_per_unit);
   online::Tick first = 0, last = 0;
   for (; line; line = reader.next(), ++report.steps) {
     const double time = (*line)["time"].get<double>() * scale.ticks_per_unit;
@@ -346,12 +384,17 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
     }
   }
   report.end = reader.end();
-  const RunEnd end = report.end == "deadlock" ? RunEnd::Deadlock : RunEnd::Cut;
+  const RunEnd end = report.end == "deadlock"   ? RunEnd::Deadlock
+                     : report.end == "timelock" ? RunEnd::Timelock
+                                                : RunEnd::Cut;
   for (auto& sweep : sweeps) sweep->end(end);
   for (Judge& judge : judges) {
     if (judge.monitor) judge.result.verdict = judge.monitor->end(end);
     if (judge.sweep) judge.result.verdict = judge.sweep->verdict(judge.value);
-    if (judge.extremum) judge.result.value = judge.extremum->value();
+    if (judge.extremum) {
+      judge.extremum->end(end);
+      judge.result.value = judge.extremum->value();
+    }
     report.results.push_back(std::move(judge.result));
   }
   return report;

@@ -37,6 +37,7 @@ double ratio(std::uint64_t x, std::uint64_t n) {
 Method method_for(const monitors::Query& q, Method asked) {
   using K = monitors::Query::Kind;
   if (q.kind == K::Expectation) return Method::Mean;
+  if (q.kind == K::Compare) return Method::Paired;
   if (asked == Method::Band) return Method::Band;
   const bool tests = asked == Method::Sprt || asked == Method::Ssp;
   if (asked == Method::Auto || (tests && q.kind == K::Estimate)) {
@@ -218,6 +219,7 @@ bool Answer::sample(bool satisfied, double value) {
     }
     case Method::Mean:
     case Method::Auto:
+    case Method::Paired:  // compare_probabilities answers those, not Answer
       break;
   }
   sum_ += value;

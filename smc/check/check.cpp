@@ -9,9 +9,11 @@
 
 #include "bipc/output_file.h"
 #include "smc/check/answer.h"
+#include "smc/check/compare.h"
 #include "smc/check/ordered_sampler.h"
 #include "smc/check/query_runs.h"
 #include "smc/check/remote_runs.h"
+#include "smc/check/simulate_runs.h"
 
 namespace smcbip::smc {
 namespace {
@@ -31,6 +33,16 @@ bool save_trace(const std::string& folder, std::size_t query, std::uint64_t inde
     if (r.error.empty()) r.error = "--save-traces: " + error;
   }
   return false;
+}
+
+/// Why `A[] phi` and `E<> phi` get no statistical answer, and what answers them.
+std::string exact_only(const monitors::Query& q) {
+  const bool all = q.kind == monitors::Query::Kind::Invariant;
+  return std::string(all ? "A[] phi asks whether phi holds in every reachable state"
+                         : "E<> phi asks whether phi holds in some reachable state") +
+         ", which sampled runs cannot show: it is answered exactly by the invariant prover "
+         "(smcbip prove, to come); statistically, " +
+         (all ? "P>=1 [ G phi ]" : "P>0 [ F phi ]") + " tests the runs";
 }
 
 /// What each point of a query is judged at.
@@ -64,6 +76,15 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     r.alpha = q.kind == monitors::Query::Kind::Expectation ? 1 - judged.confidence : judged.alpha;
     r.split = simultaneous && !query.swept ? n : 1;
   }
+  if (q.kind == monitors::Query::Kind::Invariant || q.kind == monitors::Query::Kind::Reachable) {
+    for (QueryResult& r : results) r.error = exact_only(q);
+    return results;
+  }
+  if (q.kind == monitors::Query::Kind::Compare) {
+    return compare_probabilities(system, query, judged);
+  }
+  if (q.kind == monitors::Query::Kind::Simulate)
+    return simulate_trajectories(system, query, options);
   if (q.kind == monitors::Query::Kind::Expectation && !q.pr_form) {
     for (QueryResult& r : results) {
       r.error = "E=? [ ... ] needs a run bound and a number of runs here: write E[<=T; N](...)";
@@ -241,6 +262,8 @@ const char* method_name(Method method) {
       return "mean";
     case Method::Band:
       return "dkw";
+    case Method::Paired:
+      return "paired sprt";
     case Method::Auto:
       break;
   }

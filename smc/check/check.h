@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ class RemoteRuns;
 
 /// Band: PESTIM's runs judged for every value of a monotone parameter at once, with DKW's
 /// simultaneous band (explore).
-enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band };
+/// Paired: the SPRT on runs judged for two formulas, which compares their probabilities.
+enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band, Paired };
 
 /// How runs the monitor leaves undecided count: as failures, not at all (another run is
 /// drawn, until kMaxSkippedRuns of them outnumber the decided ones), or not at all up to 1% of
@@ -87,6 +89,15 @@ struct CheckOptions {
   std::function<void(const Progress&)> progress;
 };
 
+/// The trajectories of a simulate query: per run, its points in time order, each the time (in
+/// the model's unit, milliseconds) and then one value per expression. Where an expression
+/// grows between two steps (a clock), the point just before the later step shows its value
+/// there, so that lines between points follow it.
+struct Trajectories {
+  std::vector<std::string> series;                     // the expressions, as echoed
+  std::vector<std::vector<std::vector<double>>> runs;  // run, point, {time, values...}
+};
+
 struct QueryResult {
   std::size_t query = 0;
   monitors::Bindings parameters;
@@ -102,6 +113,7 @@ struct QueryResult {
   double alpha = 0;
   std::size_t split = 1;
   std::string error;  // why the query has no answer (too many undecided runs)
+  std::shared_ptr<const Trajectories> trajectories;  // simulate queries
 };
 
 const char* method_name(Method method);

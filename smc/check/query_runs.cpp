@@ -78,38 +78,6 @@ class QueryRuns::Observer final : public engines::RunObserver {
   std::vector<engines::RunObserver*> observers_, watching_;
 };
 
-/// An expectation's observed extremum, and whether the run reached the query's run bound: a run
-/// cut before it (a step limit, a time-lock, an error) leaves the value undecided, as it leaves
-/// a formula undecided; a deadlock keeps its last state up to the bound.
-class QueryRuns::ExtremumWatch final : public engines::RunObserver {
- public:
-  ExtremumWatch(const monitors::Query& q, const monitors::TimeScale& scale,
-                const monitors::Bindings& bindings)
-      : extremum_(q, scale, bindings) {}
-
-  void reset() {
-    extremum_.reset();
-    complete_ = false;
-  }
-  bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
-    if (extremum_.observe(step, state)) return true;
-    complete_ = true;  // past the run bound
-    return false;
-  }
-  void finish(engines::RunEnd end, int, const std::string&) override {
-    if (end == engines::RunEnd::Deadlock) complete_ = true;
-  }
-
-  /// The run's value, or nullopt when the run did not reach the bound or observed nothing.
-  std::optional<double> value() const {
-    return complete_ ? extremum_.value() : std::optional<double>();
-  }
-
- private:
-  monitors::RunExtremum extremum_;
-  bool complete_ = false;
-};
-
 QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry* compiled,
                      const engines::SimulateOptions& options, const QueryPoints& query)
     : externs_(engines::Externs::with_builtins()),
@@ -143,7 +111,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       monitors_.push_back(
           std::make_unique<monitors::RunMonitor>(*q.formula, kNanoseconds, b, q.run));
     } else {
-      extrema_.push_back(std::make_unique<ExtremumWatch>(q, kNanoseconds, b));
+      extrema_.push_back(std::make_unique<monitors::RunExtremum>(q, kNanoseconds, b));
     }
   }
 }
@@ -188,9 +156,13 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
       continue;
     } else if (!monitors_.empty()) {
       outcomes[p].verdict = monitors_[p]->verdict();
-    } else if (const std::optional<double> value = extrema_[p]->value()) {
-      outcomes[p] = {Verdict::True, *value};
-    }  // else an expectation without a value for this run: undecided
+    } else {
+      // An expectation: a run cut short before its bound has no value, and is undecided as
+      // a path formula's run would be.
+      const std::optional<double> value = extrema_[p]->value();
+      outcomes[p] = {value ? Verdict::True : Verdict::Undecided,
+                     value.value_or(std::numeric_limits<double>::quiet_NaN())};
+    }
   }
 }
 

@@ -53,14 +53,13 @@ class QueryRuns {
 
  private:
   class Observer;
-  class ExtremumWatch;
   class CappedText;
 
   engines::Externs externs_;
   std::unique_ptr<engines::Simulator> simulator_;
   const QueryPoints& query_;
   std::vector<std::unique_ptr<monitors::RunMonitor>> monitors_;  // path formulas, per point
-  std::vector<std::unique_ptr<ExtremumWatch>> extrema_;          // expectations, per point
+  std::vector<std::unique_ptr<monitors::RunExtremum>> extrema_;  // expectations, per point
   std::unique_ptr<monitors::RunCriticalBound> sweep_;            // all points at once
   std::vector<double> swept_values_;  // the swept parameter's value at each point
   std::vector<char> judged_;          // this run: the points watched

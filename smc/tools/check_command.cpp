@@ -17,6 +17,7 @@
 #include "smc/tools/progress_bar.h"
 #include "smc/tools/report.h"
 #include "smc/tools/sweep_plot.h"
+#include "smc/tools/trajectory_plot.h"
 
 namespace smcbip::tools {
 namespace {
@@ -59,6 +60,10 @@ const std::map<std::string, smc::UndecidedPolicy> kPolicies{{"fail", smc::Undeci
 /// Whether the files to write can be written once the answers are known: their folders exist
 /// and they are (or link to) regular files or nothing yet.
 bool writable_outputs(const CheckCommand& check) {
+  if (!check.trajectories.empty() && !std::filesystem::is_directory(check.trajectories)) {
+    std::cerr << "smcbip: error: --trajectories: no folder " << check.trajectories << "\n";
+    return false;
+  }
   for (const std::string& path : {check.plot, check.csv}) {
     if (path.empty()) continue;
     std::string target, error;
@@ -142,6 +147,19 @@ bool write_outputs(const CheckCommand& check, const Report& report) {
   };
   write(check.csv, check.csv.empty() ? "" : csv_text(report));
   write(check.plot, check.plot.empty() ? "" : sweep_svg(report));
+  if (check.trajectories.empty()) return ok;
+  for (const smc::QueryResult& r : report.results) {
+    if (!r.trajectories) continue;
+    // Named by the query's line, with the parameters' values when it has any.
+    std::string name = "simulate-" + std::to_string(report.file.queries[r.query].at.line);
+    for (const auto& [parameter, value] : r.parameters) {
+      name += "-" + parameter + "=" + number_text(value);
+    }
+    const std::filesystem::path base = std::filesystem::path(check.trajectories) / name;
+    write(base.string() + ".csv", trajectories_csv(*r.trajectories));
+    write(base.string() + ".svg",
+          trajectories_svg(to_string(report.file.queries[r.query]), *r.trajectories));
+  }
   return ok;
 }
 
@@ -203,6 +221,9 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
     command.add_option("--csv", check.csv, "write the results as CSV to this file")
         ->type_name("FILE");
   }
+  command.add_option("--trajectories", check.trajectories,
+                     "write the trajectories of simulate queries to this folder "
+                     "(simulate-LINE.csv and .svg)");
   command
       .add_option("--undecided", check.undecided,
                   "runs the monitor leaves undecided: fail (count as false), skip (draw others, "
@@ -275,7 +296,7 @@ int run_check(CheckCommand check) {
   for (const smc::QueryResult& r : results) {
     if (!r.error.empty()) {
       const monitors::Query& q = parsed.file.queries[r.query];
-      unanswered.error(q.at, to_string(q) + ": no answer: " + r.error);
+      unanswered.error(q.at, to_string(q) + ": " + r.error);
       code = kInputError;
     } else if (r.verdict && !*r.verdict && code == 0) {
       code = kFails;

@@ -26,7 +26,8 @@ struct CheckCommand {
   bool worker = false;
   std::string compiled;  // --compiled: a plugin, or the folder of a built `bipc gen` project
   bool explore = false;
-  std::string plot, csv;  // explore: files to write
+  std::string plot, csv;     // explore: files to write
+  std::string trajectories;  // the folder simulate queries write their trajectories to
 };
 
 /// The options of `check`, and with `explore` set those of `explore` too.

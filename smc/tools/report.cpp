@@ -12,7 +12,8 @@ namespace smcbip::tools {
 namespace {
 
 bool has_interval(const smc::QueryResult& r) {
-  return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp;
+  return r.method != smc::Method::Sprt && r.method != smc::Method::Ssp &&
+         r.method != smc::Method::Paired;
 }
 
 std::string verdict_text(const smc::QueryResult& r) {
@@ -70,10 +71,17 @@ std::string query_text(const Report& report, const smc::QueryResult& r) {
 
 void print_results(std::ostream& out, const Report& report) {
   for (const smc::QueryResult& r : report.results) {
-    out << query_text(report, r) << parameters_text(r) << "\n  " << smc::method_name(r.method)
-        << ": ";
+    out << query_text(report, r) << parameters_text(r) << "\n  "
+        << (r.trajectories ? "simulate" : smc::method_name(r.method)) << ": ";
     if (!r.error.empty()) {
       out << "no answer: " << r.error << "\n";
+      continue;
+    }
+    if (r.trajectories) {
+      std::size_t points = 0;
+      for (const auto& run : r.trajectories->runs) points += run.size();
+      out << r.samples << " runs, " << points << " points, " << number_text(r.seconds)
+          << " s (--trajectories DIR writes them as CSV and SVG)\n";
       continue;
     }
     if (r.verdict) out << verdict_text(r) << ", ";
@@ -142,6 +150,10 @@ std::string json_text(const Report& report) {
       line["first_model_error"] = {{"run", why.first_error_run}, {"message", why.first_error}};
     }
     if (!r.error.empty()) line["error"] = r.error;
+    if (r.trajectories) {
+      line["series"] = r.trajectories->series;
+      line["runs"] = r.trajectories->runs;
+    }
     results.push_back(std::move(line));
   }
   Json out;

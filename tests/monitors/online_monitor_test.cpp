@@ -26,6 +26,11 @@ class StepView final : public monitors::StateView {
   explicit StepView(const ReferenceStep& step) : step_(step) {}
   double value(const monitors::Expr& name) const override { return step_.values.at(name.path); }
   bool fired(const monitors::Expr& fired) const override { return step_.fired == fired.path; }
+  // The monitor counts half units (kHalves): a slope per unit is half that per tick.
+  double slope(const monitors::Expr& name) const override {
+    const auto it = step_.slopes.find(name.path);
+    return it == step_.slopes.end() ? 0 : it->second / 2;
+  }
 
  private:
   const ReferenceStep& step_;
@@ -67,7 +72,7 @@ Tri reference_verdict(const monitors::Formula& formula, const ReferenceTrace& tr
 }
 
 ReferenceStep step(std::int64_t time, double p, double q = 0, std::string fired = "") {
-  return {time, {{"p", p}, {"q", q}}, std::move(fired)};
+  return {time, {{"p", p}, {"q", q}}, std::move(fired), {}};
 }
 
 /// The verdict the reference evaluator and the monitor give, which must be the same.
@@ -232,7 +237,7 @@ class FormulaMaker {
       case 2:
         return sub() + " || " + sub();
       case 3:
-        return sub() + " -> " + sub();
+        return sub() + (pick(2) == 0 ? " -> " : " <-> ") + sub();
       case 4:
         return "X " + sub();
       case 5:
@@ -258,9 +263,21 @@ class FormulaMaker {
   std::string leaf() {
     // The last two hold on sets closed on the right ([0, 2] for p on [0, 3)): their
     // complements start with an open interval.
-    static const char* const kLeaves[] = {
-        "p", "q", "!p", "p == q", "true", "false", "(p U[0.5,0.5] true)", "(q U[1,1] p)"};
-    return kLeaves[pick(8)];
+    // Then predicates over the clock c, whose crossings fall on half units: one instant
+    // (c == 2), closed and open sets, and one mixing c with the data p.
+    static const char* const kLeaves[] = {"p",
+                                          "q",
+                                          "!p",
+                                          "p == q",
+                                          "true",
+                                          "false",
+                                          "(p U[0.5,0.5] true)",
+                                          "(q U[1,1] p)",
+                                          "c >= 1",
+                                          "c < 2.5",
+                                          "c == 2",
+                                          "c - p > 1.5"};
+    return kLeaves[pick(12)];
   }
   std::string half(int halves) {
     return std::to_string(halves / 2) + (halves % 2 == 0 ? "" : ".5");
@@ -276,15 +293,26 @@ class FormulaMaker {
   std::mt19937 random_;
 };
 
+/// Random traces over p, q (0 or 1) and the clock c, reset now and then, whose rate (0, 1/2
+/// or 1 per unit) changes at steps: its values and crossings stay on half units.
 ReferenceTrace random_trace(std::mt19937& random) {
   auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(random); };
   ReferenceTrace trace;
   trace.deadlocked = pick(2) == 0;
   std::int64_t time = 0;
+  double clock = 0, rate = 1;
   const int steps = 1 + pick(8);
   for (int i = 0; i < steps; ++i) {
-    if (i > 0) time += pick(4) == 0 ? 0 : 1 + pick(3);
-    trace.steps.push_back(step(time, pick(2), pick(2)));
+    if (i > 0) {
+      const std::int64_t elapsed = pick(4) == 0 ? 0 : 1 + pick(3);
+      time += elapsed;
+      clock = pick(3) == 0 ? 0 : clock + rate * static_cast<double>(elapsed);
+      rate = pick(3) * 0.5;
+    }
+    ReferenceStep s = step(time, pick(2), pick(2));
+    s.values["c"] = clock;
+    s.slopes["c"] = rate;
+    trace.steps.push_back(std::move(s));
   }
   return trace;
 }
@@ -293,7 +321,12 @@ std::string describe(const ReferenceTrace& trace) {
   std::string text;
   for (const ReferenceStep& s : trace.steps) {
     text += "(" + std::to_string(s.time) + ": p=" + std::to_string(int(s.values.at("p"))) +
-            " q=" + std::to_string(int(s.values.at("q"))) + ") ";
+            " q=" + std::to_string(int(s.values.at("q")));
+    if (s.values.contains("c")) {
+      text +=
+          " c=" + std::to_string(s.values.at("c")) + "+" + std::to_string(s.slopes.at("c")) + "t";
+    }
+    text += ") ";
   }
   return text + (trace.deadlocked ? "deadlocked" : "cut");
 }

@@ -4,7 +4,8 @@
 // Continuous reading: state s_i holds on [t_i, t_{i+1}); a step followed by another at the same
 // timestamp holds at that instant only; a deadlocked run keeps its last state forever; a run cut
 // short (limit, time-lock, error) is unknown past its last step (more steps may come at that
-// step's time), and the verdict is then three-valued by Kleene's rules.
+// step's time), and the verdict is then three-valued by Kleene's rules. Clocks grow at their
+// slopes between steps and after a deadlock, and predicates read them at every grid point.
 //
 // Why a grid suffices: when timestamps and bounds are whole multiples of a granule g, the set of
 // times at which any subformula holds within one state is a union of intervals with endpoints
@@ -36,13 +37,20 @@ inline Tri tri_or(Tri a, Tri b) {
   return a == Tri::Unknown || b == Tri::Unknown ? Tri::Unknown : Tri::False;
 }
 inline Tri tri_and(Tri a, Tri b) { return tri_not(tri_or(tri_not(a), tri_not(b))); }
+inline Tri tri_iff(Tri a, Tri b) {
+  if (a == Tri::Unknown || b == Tri::Unknown) return Tri::Unknown;
+  return tri(a == b);
+}
 
 /// One step of a test trace: its (integer) time, the values of the names its predicates read
-/// (booleans as 0 or 1), and the interaction it fired ("" for none).
+/// (booleans as 0 or 1), and the interaction it fired ("" for none). Names with a slope are
+/// clocks: from the step on they grow by `slope` per time unit (their crossings of the
+/// predicates' constants must fall on multiples of 1/2, as timestamps do, for the grid).
 struct ReferenceStep {
   std::int64_t time = 0;  // in whole time units (see the grid above)
   std::map<std::string, double> values;
   std::string fired;
+  std::map<std::string, double> slopes;
 };
 
 struct ReferenceTrace {
@@ -98,16 +106,19 @@ class ReferenceEvaluator {
     return !trace_.deadlocked;
   }
 
-  double value(const monitors::Expr& e, const ReferenceStep& s) const {
+  /// The value of `e` `dt` time units after the step `s` (clocks grown).
+  double value(const monitors::Expr& e, const ReferenceStep& s, double dt) const {
     using K = monitors::Expr::Kind;
-    auto operand = [&](std::size_t k) { return value(*e.operands[k], s); };
+    auto operand = [&](std::size_t k) { return value(*e.operands[k], s, dt); };
     switch (e.kind) {
       case K::Number:
         return e.value.number;
       case K::Bool:
         return e.boolean ? 1 : 0;
-      case K::Name:
-        return s.values.at(e.path);
+      case K::Name: {
+        const auto slope = s.slopes.find(e.path);
+        return s.values.at(e.path) + (slope == s.slopes.end() ? 0 : slope->second * dt);
+      }
       case K::Fired:
         return s.fired == e.path ? 1 : 0;
       case K::Negate:
@@ -176,8 +187,10 @@ class ReferenceEvaluator {
         return Tri::True;
       case K::False:
         return Tri::False;
-      case K::Atom:
-        return tri(value(*f.atom, trace_.steps[at.step]) != 0);
+      case K::Atom: {
+        const double dt = static_cast<double>(at.t2 - first2(at.step)) / kPerUnit;
+        return tri(value(*f.atom, trace_.steps[at.step], dt) != 0);
+      }
       case K::Not:
         return tri_not(eval(*f.operands[0], at));
       case K::And:
@@ -186,6 +199,8 @@ class ReferenceEvaluator {
         return tri_or(eval(*f.operands[0], at), eval(*f.operands[1], at));
       case K::Implies:
         return tri_or(tri_not(eval(*f.operands[0], at)), eval(*f.operands[1], at));
+      case K::Iff:
+        return tri_iff(eval(*f.operands[0], at), eval(*f.operands[1], at));
       case K::Next:
         if (at.step < last()) return eval(*f.operands[0], {at.step + 1, first2(at.step + 1)});
         return trace_.deadlocked ? eval(*f.operands[0], at) : Tri::Unknown;
@@ -279,6 +294,8 @@ class PointwiseReference {
         return tri_or(eval(*f.operands[0], i), eval(*f.operands[1], i));
       case K::Implies:
         return tri_or(tri_not(eval(*f.operands[0], i)), eval(*f.operands[1], i));
+      case K::Iff:
+        return tri_iff(eval(*f.operands[0], i), eval(*f.operands[1], i));
       case K::Next:
         if (i < last()) return eval(*f.operands[0], i + 1);
         return trace_.deadlocked ? eval(*f.operands[0], i) : Tri::Unknown;

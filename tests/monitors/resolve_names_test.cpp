@@ -103,12 +103,18 @@ TEST(ResolveNames, RefusesAPlaceThatIsAlsoAVariableAndReadsExportedData) {
       "end\n",
       "Top()");
   ASSERT_TRUE(system);
-  EXPECT_EQ(resolve("P=? [ F[0,1] n.a.busy ]", *system),
-            "p.mtl:1:14: error: 'n.a.busy' is ambiguous: 'busy' is both a place and a variable "
+  EXPECT_EQ(resolve("P=? [ F{1} n.a.busy ]", *system),
+            "p.mtl:1:12: error: 'n.a.busy' is ambiguous: 'busy' is both a place and a variable "
             "of atom 'n.a'\n");
-  EXPECT_EQ(resolve("P=? [ F[0,1] n.load > 0 ]", *system), "");
-  EXPECT_EQ(resolve("P=? [ F[0,1] n.weight > 0 ]", *system),
-            "p.mtl:1:14: error: compound 'n' exports no data 'weight'\n");
+  EXPECT_EQ(resolve("P=? [ F{1} n.load > 0 ]", *system), "");
+  EXPECT_EQ(resolve("P=? [ F{1} n.weight > 0 ]", *system),
+            "p.mtl:1:12: error: compound 'n' exports no data 'weight'\n");
+  // The model has no clocks: time measures nothing it shows.
+  EXPECT_EQ(resolve("P=? [ F[0,1] n.load > 0 ]", *system),
+            "p.mtl:1:11: error: the model has no clocks, so a time bound measures nothing it "
+            "shows: bound by steps instead (F{k} phi or F[#<=k] phi, Pr[#<=K](...))\n");
+  EXPECT_NE(resolve("P=? [ F{3} time > 2 ]", *system).find("'time' measures nothing"),
+            std::string::npos);
 }
 
 }  // namespace
