@@ -221,9 +221,11 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
     command.add_option("--csv", check.csv, "write the results as CSV to this file")
         ->type_name("FILE");
   }
-  command.add_option("--trajectories", check.trajectories,
-                     "write the trajectories of simulate queries to this folder "
-                     "(simulate-LINE.csv and .svg)");
+  command
+      .add_option("--trajectories", check.trajectories,
+                  "write the trajectories of simulate queries to this folder "
+                  "(simulate-LINE.csv and .svg)")
+      ->type_name("DIR");
   command
       .add_option("--undecided", check.undecided,
                   "runs the monitor leaves undecided: fail (count as false), skip (draw others, "
