@@ -8,7 +8,7 @@ ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines monitors smc tests bench
 PREFIX ?= /usr/local
 
-.PHONY: all deps build install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check bench-mpi format clean
+.PHONY: all deps build tools install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check bench-mpi format clean
 
 all: build
 
@@ -19,11 +19,19 @@ build: deps
 	cmake --preset $(PRESET)
 	cmake --build --preset $(PRESET)
 
+# The two tools alone (bipc, smcbip) and the libraries they link: what `make demo` runs, without
+# the tests, benchmarks and runtime targets that `build` makes.
+TOOL_TARGETS := bipc_tool smcbip
+
+tools: deps
+	cmake --preset $(PRESET)
+	cmake --build --preset $(PRESET) --target $(TOOL_TARGETS)
+
 # The libraries, headers, tools and CMake package (find_package(smcbip)) under $(PREFIX).
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
-demo: build
+demo: tools
 	$(BUILD_DIR)/bin/bipc check models/rover_watchdog.bip --root $(ROOT)
 	$(BUILD_DIR)/bin/bipc ir models/rover_watchdog.bip --root $(ROOT)
 	$(BUILD_DIR)/bin/bipc dot models/rover_watchdog.bip --root $(ROOT) -o $(BUILD_DIR)/rover_watchdog.svg

@@ -8,9 +8,22 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <vector>
 
 namespace smcbip::bipc {
+namespace {
+
+/// What a file that is not a regular one is, for messages.
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
 
 std::string write_temporary_file(const std::string& pattern, const std::string& text) {
   std::vector<char> name(pattern.begin(), pattern.end());
@@ -30,15 +43,53 @@ std::string write_temporary_file(const std::string& pattern, const std::string& 
   return ok ? std::string(name.data()) : std::string();
 }
 
+bool output_target(const std::string& path, std::string& target, std::string& error) {
+  // Linux follows at most 40 links in a path; a longer chain is a loop.
+  constexpr int kMaxLinks = 40;
+  std::filesystem::path current = path;
+  for (int links = 0;; ++links) {
+    struct stat info {};
+    if (::lstat(current.c_str(), &info) != 0) {
+      if (errno != ENOENT) {
+        error = "cannot write '" + path + "': " + std::strerror(errno);
+        return false;
+      }
+      break;  // a new file (or a link to one that does not exist yet)
+    }
+    if (S_ISREG(info.st_mode)) break;
+    if (!S_ISLNK(info.st_mode)) {
+      error = "cannot write '" + path + "': " +
+              (current == path ? std::string() : "it links to '" + current.string() + "', ") +
+              kind_of(info.st_mode) + ", not a regular file";
+      return false;
+    }
+    if (links == kMaxLinks) {
+      error = "cannot write '" + path + "': too many levels of symbolic links";
+      return false;
+    }
+    std::error_code ec;
+    const std::filesystem::path next = std::filesystem::read_symlink(current, ec);
+    if (ec) {
+      error = "cannot write '" + path + "': " + ec.message();
+      return false;
+    }
+    current = next.is_absolute() ? next : current.parent_path() / next;
+  }
+  target = current.string();
+  return true;
+}
+
 bool write_file_atomically(const std::string& path, const std::string& text, std::string& error) {
+  std::string target;
+  if (!output_target(path, target, error)) return false;
   // The temporary sits next to the result, so that the rename stays on one file system.
-  const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", text);
+  const std::string temporary = write_temporary_file(target + ".tmpXXXXXX", text);
   if (temporary.empty()) {
-    error = "cannot write next to '" + path + "': " + std::strerror(errno);
+    error = "cannot write next to '" + target + "': " + std::strerror(errno);
     return false;
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
+  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
+    error = "cannot write '" + target + "': " + std::strerror(errno);
     ::unlink(temporary.c_str());
     return false;
   }

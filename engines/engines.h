@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "bipc/exit_codes.h"
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
 #include "engines/model.h"
@@ -31,9 +32,9 @@ enum RunCode : int {
   kInvariantViolation = 5,
   kUnexpectedEvent = 6,
   kTimeSafetyViolation = 7,
-  kUsageError = 64,     // EX_USAGE
-  kInputError = 65,     // EX_DATAERR
-  kInternalError = 70,  // EX_SOFTWARE
+  kUsageError = exit_codes::kRunUsageError,
+  kInputError = exit_codes::kRunInputError,
+  kInternalError = exit_codes::kRunInternalError,
 };
 
 /// Options of one simulation, as `smcbip simulate` takes them.
@@ -52,6 +53,9 @@ struct SimulateOptions {
   bool interactive = false;
   bool silent = false;
   bool explore = false;
+  /// --explore keeps every state it finds: at most this many (0.7 GB for the 10 atoms of
+  /// models/families/rendezvous_10.bip; larger states take more), then it stops.
+  std::uint64_t max_explored_states = 2'000'000;
   TraceFormat trace = TraceFormat::Text;
   /// The race of planned dates (BIP.md): none decides from the model (on when it has a
   /// @stochastic port), true forces it on timed models without one.
@@ -109,11 +113,5 @@ class Simulator {
 /// and returned as codes. `input` is read by --interactive.
 RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,
                    const Externs& externs, std::ostream& out, std::istream* input = nullptr);
-
-/// `smcbip simulate`'s run of a model once loaded: the trace on stdout, the model's output on
-/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `tool`; returns
-/// the exit code (the RunCode).
-int run_simulation(const Model& model, const SimulateOptions& options, const Externs& externs,
-                   const std::string& tool);
 
 }  // namespace smcbip::engines

@@ -17,8 +17,9 @@ std::string plural(std::uint64_t n, const char* what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
-/// Breadth-first search to depth `max_steps`; `seen` receives the keys of the states found.
-ExplorationCounts breadth_first(Runtime& runtime, std::uint64_t max_steps,
+/// Breadth-first search to depth `max_steps`, keeping at most `max_states` states; `seen`
+/// receives the keys of the states found.
+ExplorationCounts breadth_first(Runtime& runtime, std::uint64_t max_steps, std::uint64_t max_states,
                                 std::unordered_set<std::string>& seen) {
   ExplorationCounts counts;
   std::deque<std::pair<RunState, std::uint64_t>> frontier;  // with its depth
@@ -54,7 +55,14 @@ ExplorationCounts breadth_first(Runtime& runtime, std::uint64_t max_steps,
       }
       RunState next = runtime.state();
       next.now = state.now;
-      if (seen.insert(state_key(next)).second) frontier.emplace_back(std::move(next), depth + 1);
+      std::string key = state_key(next);
+      if (seen.contains(key)) continue;
+      if (seen.size() >= max_states) {
+        counts.cut = true;
+        continue;
+      }
+      seen.insert(std::move(key));
+      frontier.emplace_back(std::move(next), depth + 1);
     }
     if (failed) ++counts.error_states;
   }
@@ -71,15 +79,16 @@ std::string state_key(const RunState& state) {
   return key;
 }
 
-ExplorationCounts explore_states(Runtime& runtime, std::optional<std::uint64_t> max_steps) {
+ExplorationCounts explore_states(Runtime& runtime, std::optional<std::uint64_t> max_steps,
+                                 std::uint64_t max_states) {
   std::unordered_set<std::string> seen;
   return breadth_first(runtime, max_steps.value_or(std::numeric_limits<std::uint64_t>::max()),
-                       seen);
+                       max_states, seen);
 }
 
 std::unordered_set<std::string> reachable_state_keys(Runtime& runtime, std::uint64_t max_steps) {
   std::unordered_set<std::string> seen;
-  breadth_first(runtime, max_steps, seen);
+  breadth_first(runtime, max_steps, std::numeric_limits<std::uint64_t>::max(), seen);
   return seen;
 }
 
@@ -88,6 +97,10 @@ void write_exploration(std::ostream& out, const ExplorationCounts& counts) {
       << plural(counts.states, "reachable state") << ", " << plural(counts.deadlocks, "deadlock")
       << ", " << plural(counts.timelocks, "timelock") << ", and " << plural(counts.errors, "error")
       << " in " << plural(counts.error_states, "state") << "\n";
+  if (counts.cut) {
+    out << kEnginePrefix << "exploration cut at " << plural(counts.states, "state")
+        << " (--max-states): the counts are those of the states found\n";
+  }
 }
 
 }  // namespace smcbip::engines

@@ -3,30 +3,41 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <exception>
+#include <cstdint>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <string>
 
+#include "bipc/exit_codes.h"
+#include "bipc/options.h"
+#include "bipc/tool_main.h"
 #include "engines/engines.h"
 
 namespace smcbip::engines {
 
 /// Registers the options of `smcbip simulate` on a (sub)command.
 inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
-  app.add_option("--engine", options.engine, "scheduler")
+  constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
+  app.add_option("--engine", options.engine, "the scheduler (default: reference)")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, EngineKind>{{"reference", EngineKind::Reference},
-                                            {"optimised", EngineKind::Optimised},
-                                            {"optimized", EngineKind::Optimised},
-                                            {"multithread", EngineKind::Multithread}},
-          CLI::ignore_case));
-  app.add_option("--threads", options.threads, "worker threads of the multithread engine")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--seed", options.seed, "seed of the run's random stream");
+                      std::map<std::string, EngineKind>{{"reference", EngineKind::Reference},
+                                                        {"optimised", EngineKind::Optimised},
+                                                        {"optimized", EngineKind::Optimised},
+                                                        {"multithread", EngineKind::Multithread}},
+                      CLI::ignore_case)
+                      .description(""))
+      ->option_text(cli::choices_text({"reference", "optimised", "multithread"}));
+  cli::add_threads_option(app, options.threads,
+                          "worker threads of the multithread engine, 0 for all cores", 0);
+  cli::add_seed_option(app, options.seed, "the seed of the run's random stream (default: drawn)");
   app.add_option("--run-index", options.run_index,
-                 "which run of the seed to replay (smcbip check numbers its runs from 0)");
+                 "which run of the seed to replay (smcbip check numbers its runs from 0)")
+      ->check(cli::integer_in(0, kLargest))
+      ->type_name("I");
   app.add_option("-l,--limit", options.limit, "stop after this many steps")
-      ->check(CLI::PositiveNumber);
+      ->check(cli::integer_in(1, kLargest))
+      ->type_name("N");
   app.add_flag("--real-time", options.real_time, "follow the platform clock");
   app.add_flag("-a,--asap", options.asap, "plan each item at its earliest date");
   app.add_flag("-f,--first-enabled", options.first_enabled,
@@ -40,6 +51,11 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag(
       "--explore", options.explore,
       "enumerate the reachable states (untimed); with --limit, those within that many steps");
+  app.add_option("--max-states", options.max_explored_states,
+                 "--explore: keep at most this many states (default: " +
+                     std::to_string(options.max_explored_states) + "), then stop")
+      ->check(cli::integer_in(1, std::uint64_t{1} << 40))
+      ->type_name("N");
   app.add_flag_callback(
       "--stochastic", [&options] { options.stochastic = true; },
       "race planned dates (the default when the model has @stochastic ports)");
@@ -50,12 +66,34 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
          "--unbounded-mean",
          [&options](double ms) { options.unbounded_mean = static_cast<TimeValue>(ms * 1e6); },
          "stochastic mode: mean delay (ms) of items with no deadline (default 1)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--trace", options.trace, "trace format")
+      ->check(cli::finite_in(1e-6, 1e9))
+      ->type_name("MS");
+  app.add_option("--trace", options.trace, "the trace's format (default: text)")
       ->transform(
           CLI::CheckedTransformer(std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
                                                                      {"jsonl", TraceFormat::Jsonl}},
-                                  CLI::ignore_case));
+                                  CLI::ignore_case)
+              .description(""))
+      ->option_text(cli::choices_text({"text", "jsonl"}));
+}
+
+/// `smcbip simulate`'s run of a model once loaded: the trace on stdout, the model's output on
+/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `where` (the
+/// model file), or by `tool` without one; returns the exit code (the RunCode).
+inline int run_simulation(const Model& model, const SimulateOptions& options,
+                          const Externs& externs, const std::string& tool,
+                          const std::string& where = "") {
+  std::ios::sync_with_stdio(false);
+  // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
+  std::ostream& model_output = options.trace == TraceFormat::Jsonl ? std::cerr : std::cout;
+  Simulator simulator(model, options, externs);
+  const RunResult run =
+      simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
+  std::cout.flush();
+  if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
+    std::cerr << (where.empty() ? tool : where) << ": error: " << run.message << "\n";
+  }
+  return run.code;
 }
 
 /// The main program of a generated model: parses the options of `smcbip simulate` (no model
@@ -63,23 +101,14 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
 /// exit code.
 inline int simulate_main(int argc, char** argv, const Model& model, const Externs& externs,
                          const std::string& name) {
-  try {
+  return cli::guarded_main(name, exit_codes::kRunCodes, [&] {
     CLI::App app{name + ": the BIP model " + name + ", compiled by bipc gen"};
     SimulateOptions options;
     register_simulate_options(app, options);
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-      return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      std::cerr << name << ": error: " << e.what() << "\n";
-      return kUsageError;
-    }
+    cli::add_version_flags(app, name);
+    if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;
     return run_simulation(model, options, externs, name);
-  } catch (const std::exception& e) {
-    std::cerr << name << ": internal error: " << e.what() << "\n";
-    return kInternalError;
-  }
+  });
 }
 
 }  // namespace smcbip::engines

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "bipc/errors.h"
 #include "bipc/ir/ir.h"
 #include "engines/engines.h"
 #include "engines/externs.h"
@@ -37,8 +38,10 @@ struct PluginEntry {
 inline constexpr const char* kPluginSymbol = "smcbip_model_plugin";
 using PluginFunction = const PluginEntry* (*)();
 
-/// A plugin that cannot be found or loaded, or does not match this smcbip.
-struct PluginError {
+/// A plugin that cannot be found or loaded, or does not match this smcbip: the user's input
+/// error (what() says it is --compiled's).
+struct PluginError : InputError {
+  explicit PluginError(const std::string& why) : InputError("--compiled: " + why), message(why) {}
   std::string message;
 };
 

@@ -75,9 +75,10 @@ class Simulation {
       line("initialize components...");
     }
     if (!runtime_.initialize() || !runtime_.resume_atoms(0)) return runtime_error();
-    const ExplorationCounts counts = explore_states(runtime_, options_.limit);
+    const ExplorationCounts counts =
+        explore_states(runtime_, options_.limit, options_.max_explored_states);
     write_exploration(out_, counts);
-    return {kRunOk, RunEnd::Deadlock, counts.states, {}};
+    return {kRunOk, counts.cut ? RunEnd::Limit : RunEnd::Deadlock, counts.states, {}};
   }
 
   RunResult run() {
@@ -327,21 +328,6 @@ RunResult simulate(const bipc::ir::System& system, const SimulateOptions& option
                    const Externs& externs, std::ostream& out, std::istream* input) {
   Simulator simulator(system, options, externs);
   return simulator.run(options.run_index, RunStreams{out, out, input});
-}
-
-int run_simulation(const Model& model, const SimulateOptions& options, const Externs& externs,
-                   const std::string& tool) {
-  std::ios::sync_with_stdio(false);
-  // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
-  std::ostream& model_output = options.trace == TraceFormat::Jsonl ? std::cerr : std::cout;
-  Simulator simulator(model, options, externs);
-  const RunResult run =
-      simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
-  std::cout.flush();
-  if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
-    std::cerr << tool << ": error: " << run.message << "\n";
-  }
-  return run.code;
 }
 
 }  // namespace smcbip::engines

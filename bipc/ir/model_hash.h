@@ -2,8 +2,10 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "bipc/errors.h"
 #include "bipc/ir/ir.h"
 
 namespace smcbip::bipc::ir {
@@ -34,8 +36,12 @@ using ExternSources = std::vector<ExternSource>;
 /// one name or file into the next changes a length). Sources' paths are not hashed.
 std::string model_hash(const System& system, const ExternSources& extern_sources);
 
-/// An extern source named by the model that cannot be read.
-struct ExternSourceError {
+/// An extern source named by the model that cannot be read: the user's input error.
+struct ExternSourceError : InputError {
+  ExternSourceError(std::string path_named, std::string why)
+      : InputError("extern source " + path_named + ": " + why),
+        path(std::move(path_named)),
+        message(std::move(why)) {}
   std::string path;     // as the model names it
   std::string message;  // e.g. "no such file"
 };

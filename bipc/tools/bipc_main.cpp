@@ -13,6 +13,8 @@
 #include "bipc/codegen/code_cpp.h"
 #include "bipc/codegen/generate_cpp.h"
 #include "bipc/codegen/generate_project.h"
+#include "bipc/exit_codes.h"
+#include "bipc/input_file.h"
 #include "bipc/ir/ir_dot.h"
 #include "bipc/ir/ir_json.h"
 #include "bipc/ir/ir_text.h"
@@ -20,14 +22,14 @@
 #include "bipc/json_dump.h"
 #include "bipc/options.h"
 #include "bipc/output_file.h"
+#include "bipc/tool_main.h"
 
 namespace {
 
 using namespace smcbip::bipc;
-
-constexpr int kOk = 0;
-constexpr int kInputError = 2;
-constexpr int kInternalError = 3;
+using smcbip::exit_codes::kInputError;
+using smcbip::exit_codes::kInternalError;
+constexpr int kOk = smcbip::exit_codes::kSuccess;
 
 /// Prints the diagnostics of a run and tells whether it may go on.
 bool report(const FrontendResult& result) {
@@ -37,21 +39,27 @@ bool report(const FrontendResult& result) {
   return !result.diags.has_errors();
 }
 
+/// The front end's run on the model file, which must be a regular file when it exists.
+FrontendResult load(const FrontendOptions& options, bool need_system) {
+  require_model_file(options.file);
+  return run_frontend(options, need_system);
+}
+
 int run_check(const FrontendOptions& options) {
-  FrontendResult result = run_frontend(options, /*need_system=*/false);
+  FrontendResult result = load(options, /*need_system=*/false);
   return report(result) ? kOk : kInputError;
 }
 
 int run_dot(const FrontendOptions& options, const std::string& output) {
-  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
   const std::string dot = ir::to_dot(*result.system);
   if (output.empty() || output == "-") {
     std::cout << dot;
     return kOk;
   }
-  std::string error;
-  if (!ir::render_svg(dot, output, error)) {
+  std::string error, target;
+  if (!output_target(output, target, error) || !ir::render_svg(dot, target, error)) {
     std::cerr << "bipc: error: " << error << "\n";
     return kInputError;
   }
@@ -59,7 +67,7 @@ int run_dot(const FrontendOptions& options, const std::string& output) {
 }
 
 int run_ir(const FrontendOptions& options, const std::string& output, bool json_format) {
-  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
   const std::string json =
       json_format ? dump_json(ir::to_json(*result.system), 2) + "\n" : ir::to_text(*result.system);
@@ -87,7 +95,11 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
   }
   std::vector<std::pair<std::string, std::string>> written;  // temporary, final
   for (const codegen::GeneratedFile& file : files) {
-    const std::string path = folder + "/" + file.name;
+    std::string path;
+    if (!output_target(folder + "/" + file.name, path, error)) {
+      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
+      return false;
+    }
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
     const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
     if (temporary.empty()) {
@@ -110,23 +122,13 @@ bool write_files(const std::string& folder, const std::vector<codegen::Generated
   return true;
 }
 
-/// The extern C++ files of `system`, or nullopt with the error printed.
-std::optional<ir::ExternSources> read_extern_sources(const ir::System& system,
-                                                     const FrontendOptions& options) {
-  try {
-    return ir::extern_sources_of(system, options.include_dirs);
-  } catch (const ir::ExternSourceError& e) {
-    std::cerr << "bipc: error: extern source " << e.path << ": " << e.message << "\n";
-    return std::nullopt;
-  }
-}
-
 int run_hash(const FrontendOptions& options) {
-  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
-  const std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
-  if (!sources) return kInputError;
-  std::cout << ir::model_hash(*result.system, *sources) << "\n";
+  // An extern source that cannot be read throws ExternSourceError, an InputError.
+  std::cout << ir::model_hash(*result.system,
+                              ir::extern_sources_of(*result.system, options.include_dirs))
+            << "\n";
   return kOk;
 }
 
@@ -137,13 +139,11 @@ int run_gen(const FrontendOptions& options, const std::string& output,
     std::cerr << "bipc: error: --namespace: " << error << "\n";
     return kInputError;
   }
-  FrontendResult result = run_frontend(options, /*need_system=*/true);
+  FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
   std::vector<codegen::GeneratedFile> files;
   if (!code_only) {
-    std::optional<ir::ExternSources> sources = read_extern_sources(*result.system, options);
-    if (!sources) return kInputError;
-    project.extern_sources = std::move(*sources);
+    project.extern_sources = ir::extern_sources_of(*result.system, options.include_dirs);
   }
   project.model_file = options.file;
   project.root = options.root.empty() ? result.system->root_type : options.root;
@@ -209,13 +209,8 @@ int run(int argc, char** argv) {
       "hash", "print the model's identity: SHA-256 of its normalised IR and extern sources");
   register_frontend_options(*hash, hash_options);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    std::cerr << "bipc: error: " << e.what() << "\nRun with --help for more information.\n";
-    return kInputError;
-  }
+  smcbip::cli::add_version_flags(app, "bipc");
+  if (const int code = smcbip::cli::parse_command_line(app, argc, argv); code >= 0) return code;
   if (check->parsed()) return run_check(check_options);
   if (dot->parsed()) return run_dot(dot_options, dot_output);
   if (gen_cmd->parsed()) {
@@ -229,12 +224,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "bipc: internal error: " << e.what() << "\n";
-  } catch (...) {
-    std::cerr << "bipc: internal error\n";
-  }
-  return kInternalError;
+  return smcbip::cli::guarded_main("bipc", smcbip::exit_codes::kJudgingCodes,
+                                   [&] { return run(argc, argv); });
 }

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <thread>
 
+#include "bipc/options.h"
 #include "model.h"
 
 namespace {
@@ -96,9 +97,10 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_flag("--virtual-clock", mission.virtual_clock,
                "do not wait for the platform clock (cycles follow at once)");
+  smcbip::cli::add_version_flags(app, "hello_flight");
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "hello_flight: error: " << e.what() << "\n";

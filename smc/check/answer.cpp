@@ -50,20 +50,84 @@ Answer::Answer(const monitors::Query& q, const CheckOptions& options, double the
                std::uint64_t runs, QueryResult& result)
     : q_(&q), options_(options), theta_(theta), runs_(runs), r_(&result) {}
 
-bool Answer::take(const Outcome& outcome) {
-  if (outcome.verdict == Verdict::Undecided) {
-    ++r_->undecided;
-    if (options_.undecided == UndecidedPolicy::Error && r_->undecided > 10 &&
-        r_->undecided * 100 > r_->samples + r_->undecided) {
-      r_->error = std::to_string(r_->undecided) + " of " +
-                  std::to_string(r_->samples + r_->undecided) +
-                  " runs undecided (more than 1%): raise --max-steps, or choose --undecided";
-      return false;
-    }
-    if (options_.undecided != UndecidedPolicy::Fail) return true;
-  }
+bool Answer::take(const Outcome& outcome, std::uint64_t index, engines::RunEnd end,
+                  const std::string& failure) {
+  if (outcome.verdict == Verdict::Undecided) return undecided(index, end, failure);
   ++r_->samples;
   return sample(outcome.verdict == Verdict::True, outcome.value);
+}
+
+bool Answer::undecided(std::uint64_t index, engines::RunEnd end, const std::string& failure) {
+  ++r_->undecided;
+  UndecidedRuns& why = r_->why_undecided;
+  switch (end) {
+    case engines::RunEnd::Limit:
+      ++why.limit;
+      break;
+    case engines::RunEnd::Timelock:
+      ++why.timelock;
+      break;
+    case engines::RunEnd::Error:
+      if (why.error++ == 0) {
+        why.first_error_run = index;
+        why.first_error = failure;
+      }
+      break;
+    case engines::RunEnd::Deadlock:
+    case engines::RunEnd::Stopped:
+      ++why.ended;
+      break;
+  }
+  const std::uint64_t runs = r_->samples + r_->undecided;
+  const auto give_up = [&](const std::string& why_text) {
+    r_->error = why_text + ": " + undecided_text(why, options_.max_steps);
+    return false;
+  };
+  switch (options_.undecided) {
+    case UndecidedPolicy::Error:
+      if (r_->undecided > 10 && r_->undecided * 100 > runs) {
+        return give_up(std::to_string(r_->undecided) + " of " + std::to_string(runs) +
+                       " runs undecided (more than 1%, --undecided error)");
+      }
+      return true;
+    case UndecidedPolicy::Skip:
+      if (r_->undecided >= kMaxSkippedRuns && r_->undecided > r_->samples) {
+        return give_up("gave up after " + std::to_string(r_->undecided) +
+                       " undecided runs against " + std::to_string(r_->samples) +
+                       " decided (--undecided skip)");
+      }
+      return true;
+    case UndecidedPolicy::Fail:
+      if (end == engines::RunEnd::Error) {
+        return give_up(
+            "a run that failed is not a run where the property is false "
+            "(--undecided fail)");
+      }
+      if (r_->method == Method::Mean) {
+        return give_up(
+            "an expectation has no value for a run left undecided, which "
+            "--undecided fail cannot count (choose skip or error)");
+      }
+      ++r_->samples;
+      return sample(false, 0);
+  }
+  return true;
+}
+
+std::string undecided_text(const UndecidedRuns& runs, std::uint64_t max_steps) {
+  std::string text;
+  const auto add = [&](std::uint64_t count, const std::string& what) {
+    if (count == 0) return;
+    text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
+  };
+  add(runs.limit, "cut at the step limit (--max-steps " + std::to_string(max_steps) +
+                      ") before the query was decided: raise it, or bound the formula (an "
+                      "unbounded G or F is decided only by a deadlock or a witness)");
+  add(runs.timelock, "ended in a time-lock");
+  add(runs.error, "ended in a model error (run " + std::to_string(runs.first_error_run) + ": " +
+                      runs.first_error + ")");
+  add(runs.ended, "ended (deadlock) before the formula was decided");
+  return text.empty() ? "no run undecided" : text;
 }
 
 void Answer::finish() {

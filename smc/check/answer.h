@@ -32,8 +32,10 @@ class Answer {
   Answer(const monitors::Query& q, const CheckOptions& options, double theta, std::uint64_t runs,
          QueryResult& result);
 
-  /// Takes one run's outcome; false once the answer is known.
-  bool take(const Outcome& outcome);
+  /// Takes the outcome of run `index`, which ended as `end` (with `failure`, the model's
+  /// error, for an Error end); false once the answer is known, or given up (result's error).
+  bool take(const Outcome& outcome, std::uint64_t index, engines::RunEnd end,
+            const std::string& failure);
   /// Completes the answer once no more outcomes come.
   void finish();
 
@@ -45,6 +47,8 @@ class Answer {
 
  private:
   bool sample(bool satisfied, double value);
+  /// Counts an undecided run; false when the query gives up on it.
+  bool undecided(std::uint64_t index, engines::RunEnd end, const std::string& failure);
   void finish_mean();
 
   const monitors::Query* q_;

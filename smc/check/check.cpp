@@ -148,12 +148,25 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     if (!outcomes.failure.empty() && first_failure.empty()) {
       first_failure = "run " + std::to_string(consumed) + " ended in an error: " + outcomes.failure;
     }
+    if (!options.save_traces.empty() && outcomes.trace_cut) {
+      for (QueryResult& r : results) {
+        if (r.error.empty()) {
+          r.error = "--save-traces: the trace of run " + std::to_string(consumed) +
+                    " is larger than " + std::to_string(kMaxSavedTraceBytes >> 20) +
+                    " MiB; lower --max-steps";
+        }
+      }
+      return false;
+    }
     if (!options.save_traces.empty() &&
         !save_trace(options.save_traces, query.index, consumed, outcomes.trace, results)) {
       return false;
     }
     for (std::size_t p = 0; p < n; ++p) {
-      if (done[p].load(std::memory_order_relaxed) || answers[p].take(outcomes.points[p])) continue;
+      if (done[p].load(std::memory_order_relaxed) ||
+          answers[p].take(outcomes.points[p], consumed, outcomes.end, outcomes.failure)) {
+        continue;
+      }
       done[p].store(true, std::memory_order_relaxed);
       --open;
     }
@@ -178,7 +191,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   for (std::size_t p = 0; p < n; ++p) {
     answers[p].finish();
     results[p].seconds = seconds;
-    if (!results[p].error.empty() && !first_failure.empty()) {
+    if (!results[p].error.empty() && !first_failure.empty() &&
+        results[p].why_undecided.error == 0) {
       results[p].error += " (" + first_failure + ")";
     }
   }

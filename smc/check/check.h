@@ -26,8 +26,32 @@ class RemoteRuns;
 enum class Method : std::uint8_t { Auto, Sprt, Ssp, Pestim, Ci, Bayes, Mean, Band, Paired };
 
 /// How runs the monitor leaves undecided count: as failures, not at all (another run is
-/// drawn), or not at all up to 1% of the runs, beyond which the query fails with an error.
+/// drawn, until kMaxSkippedRuns of them outnumber the decided ones), or not at all up to 1% of
+/// the runs; beyond these bounds the query gives up with an error. A run that ended in a model
+/// error is never counted as a failure: under Fail the query gives up with that error. An
+/// expectation has no value for an undecided run: under Fail it gives up too.
 enum class UndecidedPolicy : std::uint8_t { Fail, Skip, Error };
+
+/// Under UndecidedPolicy::Skip a query gives up once this many runs were undecided and they
+/// outnumber the decided ones, rather than draw runs forever.
+inline constexpr std::uint64_t kMaxSkippedRuns = 1000;
+
+/// With --save-traces, a run's trace is kept in memory until its answer counts it: a larger
+/// trace ends the query with an error rather than exhaust memory (lower --max-steps).
+inline constexpr std::size_t kMaxSavedTraceBytes = std::size_t{64} << 20;
+
+/// The runs of a point left undecided, by how they ended (the engines' RunEnd).
+struct UndecidedRuns {
+  std::uint64_t limit = 0;     // cut by the step limit (--max-steps)
+  std::uint64_t timelock = 0;  // time could not progress
+  std::uint64_t error = 0;     // the model failed (its message in first_error)
+  std::uint64_t ended = 0;     // a deadlock, or a stop, before the formula was decided
+  std::uint64_t first_error_run = 0;
+  std::string first_error;  // the first model error, empty if none
+};
+
+/// Why runs were undecided, for a message: "12 at the step limit (--max-steps 20) ...".
+std::string undecided_text(const UndecidedRuns& runs, std::uint64_t max_steps);
 
 /// Where a query's answer stands while its runs are made (for a progress display).
 struct Progress {
@@ -82,6 +106,7 @@ struct QueryResult {
   Interval ci;
   std::optional<bool> verdict;  // hypotheses
   std::uint64_t samples = 0, undecided = 0;
+  UndecidedRuns why_undecided;  // how the undecided runs ended
   double seconds = 0;
   /// What the point was judged at: its α (for a band, the whole band's α) and the number of
   /// points of its sweep that α was split over (1: not split).

@@ -20,6 +20,36 @@ class NullBuffer final : public std::streambuf {
 
 }  // namespace
 
+/// A string that stops growing at kMaxSavedTraceBytes: past it, the stream writing to it
+/// fails and writes nothing more.
+class QueryRuns::CappedText final : public std::streambuf {
+ public:
+  void clear() {
+    text_.clear();
+    cut_ = false;
+  }
+  const std::string& text() const { return text_; }
+  bool cut() const { return cut_; }
+
+ protected:
+  int overflow(int c) override {
+    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+    const char byte = traits_type::to_char_type(c);
+    return xsputn(&byte, 1) == 1 ? c : traits_type::eof();
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    const std::size_t room = kMaxSavedTraceBytes - text_.size();
+    const auto taken = static_cast<std::size_t>(n) <= room ? static_cast<std::size_t>(n) : room;
+    text_.append(s, taken);
+    if (taken < static_cast<std::size_t>(n)) cut_ = true;
+    return static_cast<std::streamsize>(taken);
+  }
+
+ private:
+  std::string text_;
+  bool cut_ = false;
+};
+
 /// Passes each step to the observers of the points still judged, until all have decided.
 class QueryRuns::Observer final : public engines::RunObserver {
  public:
@@ -34,13 +64,16 @@ class QueryRuns::Observer final : public engines::RunObserver {
   }
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
+    end_ = end;
     failure_ = end == engines::RunEnd::Error ? message : std::string();
     for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 
+  engines::RunEnd end() const { return end_; }
   const std::string& failure() const { return failure_; }
 
  private:
+  engines::RunEnd end_ = engines::RunEnd::Stopped;
   std::string failure_;
   std::vector<engines::RunObserver*> observers_, watching_;
 };
@@ -52,7 +85,9 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       observer_(std::make_unique<Observer>()),
       nothing_(std::make_unique<NullBuffer>()),
       sink_(nothing_.get()),
-      traced_(!options.silent) {
+      traced_(!options.silent),
+      trace_text_(std::make_unique<CappedText>()),
+      trace_(trace_text_.get()) {
   if (compiled) {
     compiled->register_externs(externs_);
     simulator_ = std::make_unique<engines::Simulator>(compiled->model(), options, externs_);
@@ -104,10 +139,13 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
     }
   }
   observer_->start();
-  trace_.str({});
+  trace_text_->clear();
+  trace_.clear();
   simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
 
-  if (traced_) made.trace = trace_.str();
+  if (traced_) made.trace = trace_text_->text();
+  made.trace_cut = traced_ && trace_text_->cut();
+  made.end = observer_->end();
   made.failure = observer_->failure();
   std::vector<Outcome>& outcomes = made.points;
   outcomes.assign(n, Outcome{});

@@ -32,7 +32,9 @@ struct QueryPoints {
 struct RunOutcomes {
   std::vector<Outcome> points;
   std::string trace;
-  std::string failure;  // the error the run ended in, if it did
+  bool trace_cut = false;  // the trace outgrew kMaxSavedTraceBytes: `trace` holds its start
+  engines::RunEnd end = engines::RunEnd::Stopped;  // how the run ended
+  std::string failure;                             // the error the run ended in, if it did
 };
 
 /// Makes runs of a query's model on one thread and judges them for its points.
@@ -51,6 +53,7 @@ class QueryRuns {
 
  private:
   class Observer;
+  class CappedText;
 
   engines::Externs externs_;
   std::unique_ptr<engines::Simulator> simulator_;
@@ -64,7 +67,8 @@ class QueryRuns {
   std::unique_ptr<std::streambuf> nothing_;
   std::ostream sink_;
   bool traced_;
-  std::ostringstream trace_;
+  std::unique_ptr<CappedText> trace_text_;  // at most kMaxSavedTraceBytes
+  std::ostream trace_;
 };
 
 }  // namespace smcbip::smc

@@ -132,6 +132,8 @@ void put_run(Bytes& out, const RunOutcomes& run) {
     out.put(static_cast<std::uint8_t>(o.verdict));
     out.put(o.value);
   }
+  out.put(static_cast<std::uint8_t>(run.end));
+  out.put(static_cast<std::uint8_t>(run.trace_cut));
   out.put_text(run.failure);
   out.put_text(run.trace);
 }
@@ -143,6 +145,8 @@ RunOutcomes get_run(Bytes& in) {
     o.verdict = static_cast<monitors::Verdict>(in.get<std::uint8_t>());
     o.value = in.get<double>();
   }
+  run.end = static_cast<engines::RunEnd>(in.get<std::uint8_t>());
+  run.trace_cut = in.get<std::uint8_t>() != 0;
   run.failure = in.get_text();
   run.trace = in.get_text();
   return run;

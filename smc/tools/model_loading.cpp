@@ -2,10 +2,13 @@
 
 #include <iostream>
 
+#include "bipc/input_file.h"
+
 namespace smcbip::tools {
 
 std::optional<bipc::ir::System> load_model_system(const bipc::FrontendOptions& frontend,
                                                   LoadFailure& failure) {
+  bipc::require_model_file(frontend.file);
   bipc::FrontendResult model = bipc::run_frontend(frontend, /*need_system=*/true);
   bipc::Diagnostics sorted = model.diags;
   sorted.sort_by_location();
@@ -19,6 +22,12 @@ std::optional<bipc::ir::System> load_model_system(const bipc::FrontendOptions& f
     return std::nullopt;
   }
   return std::move(model.system);
+}
+
+monitors::ParsedProperties load_property_file(const std::string& path,
+                                              const std::vector<std::string>& parameters) {
+  return monitors::parse_properties(bipc::read_input_file(path, "the property file"), path,
+                                    parameters);
 }
 
 }  // namespace smcbip::tools

@@ -6,7 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bipc/exit_codes.h"
+#include "bipc/input_file.h"
 #include "bipc/json_dump.h"
+#include "bipc/options.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/report.h"
@@ -18,8 +21,8 @@ using monitors::TraceReport;
 using monitors::TraceResult;
 using monitors::Verdict;
 
-constexpr int kFails = 1;
-constexpr int kInputError = 2;
+using exit_codes::kInputError;
+constexpr int kFails = exit_codes::kPropertyFails;
 
 /// Nanosecond ticks per unit of the traces' times.
 const std::map<std::string, double> kTicksPerUnit{
@@ -101,26 +104,31 @@ bool names_of_model(const MonitorOptions& options, monitors::ParsedProperties& p
 }  // namespace
 
 void register_monitor_options(CLI::App& command, MonitorOptions& options) {
-  command.add_option("PROP", options.properties, "the property file (.mtl or .ltl)")->required();
-  command.add_option("--trace", options.traces, "a recorded run in the JSON-lines format")
-      ->required();
-  command.add_flag("--json", options.json, "print the results as one JSON object");
+  command.add_option("PROP", options.properties, "the property file (.mtl or .ltl)")
+      ->required()
+      ->type_name("");
+  cli::once_per_use(command.add_option("--trace", options.traces,
+                                       "a recorded run in the JSON-lines format (repeatable)"))
+      ->required()
+      ->type_name("RUN.jsonl");
+  cli::add_json_flag(command, options.json);
   command.add_flag("--pointwise", options.pointwise,
                    "read time at steps only (default: continuously, a state holding until the "
                    "next step)");
   command
       .add_option("--time-unit", options.time_unit,
                   "the unit of the traces' times and of bounds written without one")
-      ->check(CLI::IsMember({"s", "ms", "us", "ns"}))
-      ->capture_default_str();
-  command.add_option("--model", options.model.file,
-                     "the model the runs come from: the properties' names must be its own");
-  command.add_option("--root", options.model.root, "the model's root compound (with --model)");
-  command.add_option("-I", options.model.include_dirs, "a folder of packages the model uses");
+      ->check(CLI::IsMember({"s", "ms", "us", "ns"}).description(""))
+      ->option_text(cli::choices_text({"s", "ms", "us", "ns"}) + " (default: ms)");
+  command
+      .add_option("--model", options.model.file,
+                  "the model the runs come from: the properties' names must be its own")
+      ->type_name("FILE");
+  bipc::register_model_options(command, options.model);
 }
 
 int run_monitor(const MonitorOptions& options) {
-  monitors::ParsedProperties parsed = monitors::load_properties(options.properties);
+  monitors::ParsedProperties parsed = load_property_file(options.properties);
   if (parsed.ok() && !options.model.file.empty() && !names_of_model(options, parsed)) {
     return kInputError;
   }
@@ -131,6 +139,7 @@ int run_monitor(const MonitorOptions& options) {
   const monitors::TimeScale scale{kTicksPerUnit.at(options.time_unit), 1e9};
   std::vector<Checked> checked;
   for (const std::string& path : options.traces) {
+    bipc::require_input_file(path, "the trace", /*streams=*/true);
     std::ifstream in(path);
     if (!in) {
       std::cerr << "smcbip: error: cannot read the trace " << path << "\n";

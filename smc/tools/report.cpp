@@ -141,6 +141,14 @@ std::string json_text(const Report& report) {
     line["undecided"] = r.undecided;
     line["seconds"] = r.seconds;
     line["alpha"] = r.alpha;
+    const smc::UndecidedRuns& why = r.why_undecided;
+    line["undecided_runs"] = {{"limit", why.limit},
+                              {"timelock", why.timelock},
+                              {"error", why.error},
+                              {"ended", why.ended}};
+    if (!why.first_error.empty()) {
+      line["first_model_error"] = {{"run", why.first_error_run}, {"message", why.first_error}};
+    }
     if (!r.error.empty()) line["error"] = r.error;
     if (r.trajectories) {
       line["series"] = r.trajectories->series;
@@ -150,6 +158,17 @@ std::string json_text(const Report& report) {
   }
   Json out;
   out["model"] = {{"file", report.model}, {"root", report.root}, {"hash", report.hash}};
+  if (const smc::CheckOptions* o = report.settings.options) {
+    out["settings"] = {{"method", report.settings.method},
+                       {"seed", o->seed},
+                       {"alpha", o->alpha},
+                       {"beta", o->beta},
+                       {"delta", o->delta},
+                       {"confidence", o->confidence},
+                       {"max_steps", o->max_steps},
+                       {"undecided", report.settings.undecided},
+                       {"param", report.settings.parameters}};
+  }
   out["results"] = std::move(results);
   return bipc::dump_json(out, 2) + "\n";
 }

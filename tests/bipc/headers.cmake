@@ -4,6 +4,10 @@ set(BIPC_PUBLIC_HEADERS
   bipc/diagnostics.h
   bipc/options.h
   bipc/output_file.h
+  bipc/input_file.h
+  bipc/errors.h
+  bipc/exit_codes.h
+  bipc/tool_main.h
   bipc/timing.h
   bipc/ast/ast.h
   bipc/ir/ir.h

@@ -181,5 +181,43 @@ TEST(Check, DeadlocksAndTimeLocksInsideABoundAreDecided) {
   }
 }
 
+TEST(Check, SkippingUndecidedRunsGivesUpInsteadOfDrawingForever) {
+  // Every run is cut at 5 steps, long before 1000 ms: --undecided skip gave no answer and never
+  // stopped. Expectations and probabilities count such runs alike (the expectation counted
+  // them as complete runs), and say how they ended.
+  CheckOptions options;
+  options.max_steps = 5;
+  options.threads = 2;
+  options.undecided = UndecidedPolicy::Skip;
+  const auto results = check("channel.bip",
+                             "E[<=1000; 20](max: Sender.sent)\n"
+                             "P=? [ G[0,1000] Sender.sent >= 0 ]\n",
+                             options);
+  ASSERT_EQ(results.size(), 2u);
+  for (const QueryResult& r : results) {
+    EXPECT_EQ(r.samples, 0u);
+    EXPECT_EQ(r.undecided, kMaxSkippedRuns);
+    EXPECT_EQ(r.why_undecided.limit, kMaxSkippedRuns);
+    EXPECT_EQ(r.error.rfind("gave up after 1000 undecided runs against 0 decided", 0), 0u)
+        << r.error;
+    EXPECT_NE(r.error.find("cut at the step limit (--max-steps 5)"), std::string::npos);
+  }
+  options.undecided = UndecidedPolicy::Error;
+  for (const QueryResult& r : check("channel.bip", "E[<=1000; 20](max: Sender.sent)\n", options)) {
+    EXPECT_EQ(r.undecided, 11u);
+    EXPECT_EQ(r.error.rfind("11 of 11 runs undecided", 0), 0u) << r.error;
+  }
+  // fail cannot count a run without a value as false: the expectation gives up.
+  options.undecided = UndecidedPolicy::Fail;
+  const QueryResult failed = check("channel.bip", "E[<=1000; 20](max: Sender.sent)\n", options)[0];
+  EXPECT_NE(failed.error.find("an expectation has no value"), std::string::npos) << failed.error;
+  // Runs that reach the bound are complete, with or without the step limit.
+  options.max_steps = 1'000'000;
+  const QueryResult complete = check("channel.bip", "E[<=100; 20](max: Sender.sent)\n", options)[0];
+  EXPECT_TRUE(complete.error.empty()) << complete.error;
+  EXPECT_EQ(complete.samples, 20u);
+  EXPECT_EQ(complete.undecided, 0u);
+}
+
 }  // namespace
 }  // namespace smcbip::smc

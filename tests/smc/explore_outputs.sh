@@ -57,7 +57,10 @@ fi
 printf 'P=? [ F[0,100] Channel.lost > 0 ]\n' >"$out/one.mtl"
 "$bin/smcbip" check "$source/models/channel.bip" "$out/one.mtl" --root 'System()' --delta 0.1 \
   --save-traces "$out/traces" --json >"$out/check.json"
-"$bin/smcbip" monitor "$out/one.mtl" --trace "$out"/traces/*.jsonl \
+# --trace takes one file per use (it never swallows the arguments after it).
+traces=()
+for trace in "$out"/traces/*.jsonl; do traces+=(--trace "$trace"); done
+"$bin/smcbip" monitor "$out/one.mtl" "${traces[@]}" \
   --model "$source/models/channel.bip" --root 'System()' --json >"$out/monitor.json" ||
   [[ $? -eq 1 ]] # some runs are false
 python3 - "$out" <<'PY'

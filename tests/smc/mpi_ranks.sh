@@ -74,7 +74,8 @@ grep -q "does not hold  [0-9]* runs" "$out/stdout" ||
   fail "killed rank: the first query's answer is missing: $(cat "$out/stdout" "$out/stderr")"
 grep -q "no answer: the MPI job was ended" "$out/stdout" ||
   fail "killed rank: the interrupted query is not reported: $(cat "$out/stdout")"
-grep -q "smcbip: error: .*the MPI job was ended" "$out/stderr" || fail "killed rank: no error on stderr"
+grep -q "two.mtl:3:1: error: .*the MPI job was ended" "$out/stderr" ||
+  fail "killed rank: no error at the query's line on stderr: $(cat "$out/stderr")"
 [[ $(wc -l <"$out/answers.csv") == 3 ]] || fail "killed rank: the CSV is not whole: $(cat "$out/answers.csv")"
 ls "$out" | grep -q tmp && fail "killed rank: a temporary file was left: $(ls "$out")"
 echo "mpi_ranks: ok"
