@@ -83,10 +83,10 @@ void Extremum::account(double ticks) {
 void Extremum::end(RunEnd how) {
   if (over_ || !started_) return;
   over_ = true;
-  if (how == RunEnd::Cut) return;  // what the run would have shown up to its bound is unknown
-  // A deadlocked run keeps its last state (its clocks grow) up to the bound; a time-locked
-  // one ends where it is.
-  if (how == RunEnd::Deadlock && until_ != std::numeric_limits<online::Tick>::max()) {
+  // What a run cut short or time-locked would have shown up to its bound is unknown.
+  if (how != RunEnd::Deadlock) return;
+  // A deadlocked run keeps its last state (its clocks grow) up to the bound.
+  if (until_ != std::numeric_limits<online::Tick>::max()) {
     account(static_cast<double>(until_ - last_time_));
   }
   finish();

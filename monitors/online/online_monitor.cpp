@@ -429,14 +429,10 @@ Verdict OnlineMonitor::end(RunEnd how) {
     emit_leaves(kForever, how);
     signals_.segments.finish();
     advance();
-  } else if (how == RunEnd::Timelock) {
-    // Time stops at the last step: its instant is the run's last, and the run is over.
-    emit_leaves(kForever, how);
-    for (const auto& node : nodes_) node->close({last_.t, kLastRank});
-    signals_.segments.finish();
-    advance();
   } else {
-    emit_leaves(last_);
+    // A time-lock shows its last state (where timelock holds) at its instant, and no more:
+    // what the windows beyond would have seen is unknown, as for a run cut short.
+    emit_leaves(last_, how);
     advance();
   }
   if (const online::Run* run = root_run()) {

@@ -2,9 +2,8 @@
 // verdict as soon as the steps read decide it, keeping only what the formula's windows still
 // need (never the run). Semantics: PROPERTIES.md's continuous reading (a state holds from its
 // step's time to the next step's; steps may share a timestamp), non-strict until, a run that
-// deadlocks keeps its last state forever while its clocks grow, a run that time-locks ends at
-// its last instant, a run cut short leaves undecided what its missing future could change
-// (Kleene's three values).
+// deadlocks keeps its last state forever while its clocks grow, a run that time-locks or is cut
+// short leaves undecided what its missing future could change (Kleene's three values).
 #pragma once
 
 #include <cstddef>
@@ -39,8 +38,9 @@ class StateView {
 enum class Verdict : std::uint8_t { False, True, Undecided };
 
 /// How a run ended after its last step: deadlocked (its last state holds forever, time passes
-/// and clocks grow), time-locked (time cannot pass its last step's: nothing follows), or cut
-/// short (a limit, an error, a stop: what follows is unknown).
+/// and clocks grow), time-locked (time cannot pass its last step's: its last state, where
+/// timelock holds, decides what it can, and what follows is unknown), or cut short (a limit,
+/// an error, a stop: what follows is unknown).
 enum class RunEnd : std::uint8_t { Deadlock, Timelock, Cut };
 
 /// The time scale of bounds: ticks per unit of the model (a number without a unit) and per

@@ -81,7 +81,11 @@ std::optional<GoldenRun> golden_run(const fs::path& file) {
   }
   GoldenRun run;
   for (std::size_t i = 0; i + 1 < words.size(); ++i) {
-    if (words[i] == "--root") run.root = words[i + 1];
+    if (words[i] == "--root") {
+      // As the tools read it: a root without parentheses is its constructor without arguments.
+      run.root = words[i + 1];
+      if (run.root.find('(') == std::string::npos) run.root += "()";
+    }
     if (words[i] == "-I") {
       std::string dir = words[i + 1];
       if (dir.starts_with("%d")) dir = file.parent_path().string() + dir.substr(2);

@@ -361,7 +361,14 @@ TEST(JsonlTrace, OneObjectPerStateThenTheEnd) {
   std::istringstream lines(jsonl_run(system, 0));
   std::vector<nlohmann::json> objects;
   for (std::string line; std::getline(lines, line);) objects.push_back(nlohmann::json::parse(line));
-  ASSERT_EQ(objects.size(), 32u) << "initial state, 30 steps, end";
+  ASSERT_EQ(objects.size(), 33u) << "header, initial state, 30 steps, end";
+  // The header names the run and declares the clocks with their units.
+  const nlohmann::json& header = objects.front()["header"];
+  EXPECT_EQ(header["format"], "smcbip-trace");
+  EXPECT_EQ(header["seed"], 7);
+  EXPECT_EQ(header["run"], 0);
+  EXPECT_EQ(header["clocks"]["ROOT.Channel.x"]["unit_ns"], 1000000);
+  objects.erase(objects.begin());
   const nlohmann::json& first = objects.front();
   EXPECT_EQ(first["step"], 0);
   EXPECT_EQ(first["time"], 0.0);
