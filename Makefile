@@ -79,10 +79,13 @@ define fuzz_run
 
 endef
 
+# The seeds are made by the tools of the plain build (which `make test` has built already).
 fuzz-build: deps
+	cmake --preset $(PRESET)
+	cmake --build --preset $(PRESET) --target bipc_ir_seeds smcbip
+	tests/fuzz_seeds.sh $(BUILD_DIR) build-fuzz/seeds
 	cmake --preset fuzz
-	cmake --build --preset fuzz --target $(FUZZ_TARGETS:%=%_fuzz) bipc_ir_seeds smcbip
-	tests/fuzz_seeds.sh build-fuzz
+	cmake --build --preset fuzz --target $(FUZZ_TARGETS:%=%_fuzz)
 
 # The short run that `make test` includes; `make fuzz` is the long one (FUZZ_SECONDS each).
 fuzz-smoke: fuzz-build
