@@ -105,6 +105,19 @@ TEST(TraceCheck, NumberBeyondTheDoublesIsALocatedError) {
             "1:54: a number out of the range of doubles\n");
 }
 
+TEST(TraceCheck, HeaderAndRatesFaultsAreLocated) {
+  const std::string header = R"({"header":{"clocks":{"ch.x":{"unit_ns":1000000}}}})";
+  EXPECT_EQ(faults(header + "\n" + kStep0 + "\n" +
+                   R"({"time":1,"places":{"ch":[]},"data":{"ch.lost":0},"rates":{"ch.x":2}})"),
+            "(no fault)");
+  EXPECT_EQ(faults(std::string(kStep0) + "\n" + header),
+            "2:11: the header must be the first line\n");
+  EXPECT_EQ(faults(R"({"header":{"clocks":{"ch.x":{"unit_ns":0}}}})" + std::string("\n") + kStep0),
+            "1:29: expected clock \"ch.x\" to give its unit as \"unit_ns\" > 0\n");
+  EXPECT_EQ(faults(std::string(kStep0) + "\n" + R"({"time":1,"rates":{"ch.x":"2"}})"),
+            "2:27: the rate of \"ch.x\" is a string, expected a number\n");
+}
+
 TEST(TraceCheck, ErrorTextIsOneLocatedLinePerFault) {
   const TraceError e("t.jsonl", {{2, 9, "the time goes back"}, {3, 1, "expected"}}, 7);
   EXPECT_STREQ(e.what(),
