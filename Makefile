@@ -50,21 +50,49 @@ test: build
 test-slow: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -L slow -j2
 
-# Seeds are the tracked valid models; new inputs go to build-fuzz/corpus, never into the tree.
-FUZZ_SEEDS := tests/bipc/golden/valid models
+# The fuzzers, each with its seeds and dictionary. Seeds are files of the tree and what
+# tests/fuzz_seeds.sh makes of the bundled models (IR encodings, traces of short runs) in
+# build-fuzz/seeds; new inputs go to build-fuzz/corpus/<target>, never into the tree.
+FUZZ_TARGETS := bipc property trace ir cdf
+FUZZ_SEEDS_bipc := tests/bipc/golden/valid models
+FUZZ_SEEDS_property := build-fuzz/seeds/properties
+FUZZ_SEEDS_trace := tests/smc/golden/traces build-fuzz/seeds/traces
+FUZZ_SEEDS_ir := build-fuzz/seeds/ir
+FUZZ_SEEDS_cdf := tests/engines/fuzz/seeds
+FUZZ_DICT_bipc := tests/bipc/fuzz/bip.dict
+FUZZ_DICT_property := tests/monitors/fuzz/property.dict
+FUZZ_DICT_trace := tests/monitors/fuzz/trace.dict
+FUZZ_DICT_ir := tests/bipc/fuzz/ir.dict
+FUZZ_DICT_cdf := tests/engines/fuzz/cdf.dict
+# The smoke run of `make test`: two minutes in all, 40 s for the front end, 20 s for each other.
+FUZZ_SMOKE_SECONDS_bipc := 40
+FUZZ_SMOKE_SECONDS_property := 20
+FUZZ_SMOKE_SECONDS_trace := 20
+FUZZ_SMOKE_SECONDS_ir := 20
+FUZZ_SMOKE_SECONDS_cdf := 20
 
+# $(call fuzz_run,TARGET,SECONDS): one fuzzer for SECONDS from its corpus and seeds.
+define fuzz_run
+	mkdir -p build-fuzz/corpus/$(1)
+	build-fuzz/bin/$(1)_fuzz -dict=$(FUZZ_DICT_$(1)) -max_total_time=$(2) -timeout=10 \
+	  build-fuzz/corpus/$(1) $(FUZZ_SEEDS_$(1))
+
+endef
+
+# The seeds are made by the tools of the plain build (which `make test` has built already).
 fuzz-build: deps
+	cmake --preset $(PRESET)
+	cmake --build --preset $(PRESET) --target bipc_ir_seeds smcbip
+	tests/fuzz_seeds.sh $(BUILD_DIR) build-fuzz/seeds
 	cmake --preset fuzz
-	cmake --build --preset fuzz --target bipc_fuzz
+	cmake --build --preset fuzz --target $(FUZZ_TARGETS:%=%_fuzz)
 
-# The short run that `make test` includes; `make fuzz` is the long one.
+# The short run that `make test` includes; `make fuzz` is the long one (FUZZ_SECONDS each).
 fuzz-smoke: fuzz-build
-	mkdir -p build-fuzz/corpus
-	build-fuzz/bin/bipc_fuzz -dict=tests/bipc/fuzz/bip.dict -max_total_time=60 -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+	$(foreach t,$(FUZZ_TARGETS),$(call fuzz_run,$(t),$(FUZZ_SMOKE_SECONDS_$(t))))
 
 fuzz: fuzz-build
-	mkdir -p build-fuzz/corpus
-	build-fuzz/bin/bipc_fuzz -dict=tests/bipc/fuzz/bip.dict -max_total_time=$(FUZZ_SECONDS) -timeout=10 build-fuzz/corpus $(FUZZ_SEEDS)
+	$(foreach t,$(FUZZ_TARGETS),$(call fuzz_run,$(t),$(FUZZ_SECONDS)))
 
 bench: build
 	bench/frontend_scaling.sh $(BUILD_DIR)

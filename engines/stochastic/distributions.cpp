@@ -385,6 +385,23 @@ std::vector<std::string_view> fields(std::string_view line) {
   return out;
 }
 
+// A field of the file as an error message quotes it: its first 24 bytes, those that are not
+// printable ASCII as \xNN, so that a field of binary bytes or of a megabyte stays one short line.
+std::string shown(std::string_view field) {
+  constexpr std::size_t kShown = 24;
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < field.size() && i < kShown; ++i) {
+    const auto c = static_cast<unsigned char>(field[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      out += {'\\', 'x', kHex[c >> 4], kHex[c & 0xf]};
+    }
+  }
+  return field.size() > kShown ? out + "..." : out;
+}
+
 std::optional<double> parse_number(std::string_view text) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   double value = 0.0;
@@ -427,8 +444,7 @@ std::variant<EmpiricalCdf, std::string> EmpiricalCdf::parse(std::string_view tex
     for (int i = 0; i < 2; ++i) {
       const std::optional<double> value = parse_number(parts[i]);
       const char* what = i == 0 ? "value" : "cdf";
-      if (!value)
-        return error(std::string(what) + " '" + std::string(parts[i]) + "' is not a number");
+      if (!value) return error(std::string(what) + " '" + shown(parts[i]) + "' is not a number");
       if (!std::isfinite(*value)) return error(std::string(what) + " must be finite");
       (i == 0 ? point.value : point.cdf) = *value;
     }

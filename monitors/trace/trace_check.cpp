@@ -11,6 +11,7 @@
 
 #include "monitors/online/critical_bound.h"
 #include "monitors/online/extremum.h"
+#include "monitors/trace/detail/trace_reader.h"
 
 namespace smcbip::monitors {
 namespace {
@@ -36,8 +37,7 @@ struct TraceName {
   std::string place;  // Place
 };
 
-/// The clocks a trace's header declares: nanoseconds per unit of each.
-using TraceClocks = std::unordered_map<std::string, double>;
+using detail::TraceClocks;
 
 /// One step of a trace as a state: its data, marked places and fired interaction; the data its
 /// header declares clocks grow at their rates after the step.
@@ -94,81 +94,6 @@ class StepState final : public StateView {
   const TraceClocks& clocks_;
   double ticks_per_ms_;
   Json line_;
-};
-
-/// Reads the JSON lines of a trace: steps, then perhaps an end line.
-class TraceReader {
- public:
-  TraceReader(std::istream& in, std::string path) : in_(in), path_(std::move(path)) {}
-
-  /// The next step's line, or nullopt when the trace is over.
-  std::optional<Json> next() {
-    std::string text;
-    while (std::getline(in_, text)) {
-      ++line_;
-      if (text.find_first_not_of(" \t\r") == std::string::npos) {
-        ++blank_lines_;
-        continue;
-      }
-      if (!end_.empty()) fail("nothing may follow the end line");
-      Json line = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-      if (line.is_discarded() || !line.is_object()) fail("expected a JSON object on one line");
-      if (line.contains("header")) {
-        if (line_ != 1 + blank_lines_) fail("the header must be the first line");
-        read_header(line["header"]);
-        continue;
-      }
-      if (line.contains("end")) {
-        if (!line["end"].is_string()) fail("expected \"end\" to be a string");
-        end_ = line["end"].get<std::string>();
-        continue;
-      }
-      check_step(line);
-      return line;
-    }
-    return std::nullopt;
-  }
-
-  const std::string& end() const { return end_; }
-  const TraceClocks& clocks() const { return clocks_; }
-  [[noreturn]] void fail(const std::string& message) const {
-    throw TraceError(path_, line_, message);
-  }
-
- private:
-  void check_step(const Json& line) const {
-    if (!line.contains("time") || !line["time"].is_number()) fail("expected a number \"time\"");
-    if (line.contains("fired") && !line["fired"].is_null() && !line["fired"].is_string()) {
-      fail("expected \"fired\" to be a string or null");
-    }
-    for (const char* part : {"places", "data"}) {
-      if (line.contains(part) && !line[part].is_object()) {
-        fail(std::string("expected \"") + part + "\" to be an object");
-      }
-    }
-  }
-
-  /// The header's clocks: `"clocks": {"ROOT.a.x": {"unit_ns": 1000000}, ...}`.
-  void read_header(const Json& header) {
-    if (!header.is_object()) fail("expected \"header\" to be an object");
-    if (!header.contains("clocks")) return;
-    const Json& clocks = header["clocks"];
-    if (!clocks.is_object()) fail("expected the header's \"clocks\" to be an object");
-    for (const auto& [name, clock] : clocks.items()) {
-      const Json* unit =
-          clock.is_object() && clock.contains("unit_ns") ? &clock["unit_ns"] : nullptr;
-      if (unit == nullptr || !unit->is_number() || !(unit->get<double>() > 0)) {
-        fail("expected clock \"" + name + "\" to give its unit as \"unit_ns\" > 0");
-      }
-      clocks_[name] = unit->get<double>();
-    }
-  }
-
-  std::istream& in_;
-  std::string path_;
-  std::size_t line_ = 0, blank_lines_ = 0;
-  std::string end_;
-  TraceClocks clocks_;
 };
 
 /// Binds the names of the file's predicates to the keys of the first step.
@@ -314,9 +239,12 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
     }
   }
   if (diagnostics.has_errors()) return {};
-  TraceReader reader(in, path);
+  detail::TraceReader reader(in, path, scale.ticks_per_unit);
   std::optional<Json> line = reader.next();
-  if (!line) reader.fail("expected at least one step");
+  if (!line) {
+    if (!reader.faulty()) reader.fault("expected at least one step");
+    reader.finish();
+  }
 
   const Bindings constants = constant_values(file);
   const auto parameters = parameter_values(file);
@@ -329,6 +257,11 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   }
   if (diagnostics.has_errors()) return {};
   const std::unordered_map<const Expr*, TraceName> names = binder.take();
+  std::set<std::string> data, atoms;
+  for (const auto& [expr, name] : names) {
+    (name.kind == TraceName::Kind::Data ? data : atoms).insert(name.key);
+  }
+  reader.require({data.begin(), data.end()}, {atoms.begin(), atoms.end()});
 
   std::vector<Judge> judges;
   std::vector<std::unique_ptr<CriticalBound>> sweeps;
@@ -366,14 +299,12 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
 
   TraceReport report;
   StepState state(names, reader.clocks(), scale.ticks_per_unit);
-  online::Tick first = 0, last = 0;
-  for (; line; line = reader.next(), ++report.steps) {
-    const double time = (*line)["time"].get<double>() * scale.ticks_per_unit;
-    if (!(std::abs(time) < 1e15)) reader.fail("the time is out of range");
-    const auto ticks = static_cast<online::Tick>(std::llround(time));
-    if (report.steps == 0) first = last = ticks;
-    if (ticks < last) reader.fail("the time goes back");
-    last = ticks;
+  online::Tick first = 0;
+  for (; line; line = reader.next()) {
+    // Past a fault the trace is only read for more of them.
+    if (reader.faulty()) continue;
+    const online::Tick ticks = reader.ticks();
+    if (report.steps == 0) first = ticks;
     state.read(std::move(*line));
     for (auto& sweep : sweeps) sweep->step(state, ticks);
     for (Judge& judge : judges) {
@@ -382,7 +313,9 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
         judge.extremum->step(state, ticks - first, static_cast<std::int64_t>(report.steps));
       }
     }
+    ++report.steps;
   }
+  reader.finish();
   report.end = reader.end();
   const RunEnd end = report.end == "deadlock"   ? RunEnd::Deadlock
                      : report.end == "timelock" ? RunEnd::Timelock

@@ -17,15 +17,25 @@
 
 namespace smcbip::monitors {
 
-/// A trace that is not in the exchange format: where (line, from 1) and what was expected.
+/// One fault of a trace: where (line and byte column, from 1) and what.
+struct TraceFault {
+  std::size_t line = 0;
+  std::size_t column = 0;
+  std::string message;
+};
+
+/// The most faults a TraceError lists; it counts the others.
+inline constexpr std::size_t kMaxTraceFaults = 20;
+
+/// A trace that is not in the exchange format: its first faults in file order (at most
+/// kMaxTraceFaults) and how many more it has. what() is one `path:line:column: error: message`
+/// line per fault, then `path: error: N more errors not shown` when there are more.
 class TraceError : public std::runtime_error {
  public:
-  TraceError(std::string path, std::size_t line, const std::string& message)
-      : std::runtime_error(path + ":" + std::to_string(line) + ": " + message),
-        path(std::move(path)),
-        line(line) {}
+  TraceError(std::string path, std::vector<TraceFault> faults, std::size_t more);
   std::string path;
-  std::size_t line;
+  std::vector<TraceFault> faults;  // never empty
+  std::size_t more = 0;
 };
 
 /// The verdict of one query for one value of its parameters.
@@ -46,7 +56,11 @@ struct TraceReport {
 /// Names of predicates are bound to the trace's data and places (paths may drop the root's
 /// name); what does not bind is reported in `diagnostics` (then the report is empty). A run
 /// that ends in a deadlock keeps its last state; one that ends otherwise, or without an end
-/// line, is cut short. Throws TraceError, and MonitorError for bounds the scale cannot hold.
+/// line, is cut short. The whole trace is read for faults: lines that are not JSON objects,
+/// steps without a number "time" or whose time goes back, data the queries read that are not
+/// numbers or booleans (or missing), places of their atoms that are not lists of names, end
+/// lines of an unknown reason, lines after the end line. Throws TraceError when it finds any,
+/// and MonitorError for bounds the scale cannot hold.
 TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::string& path,
                         const TimeScale& scale, bipc::Diagnostics& diagnostics,
                         Reading reading = Reading::Continuous);

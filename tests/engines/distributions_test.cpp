@@ -596,5 +596,19 @@ TEST(EmpiricalCdf, ErrorsNameFileAndLine) {
             "/nonexistent/smcbip/x.cdf: cannot open the empirical CDF file");
 }
 
+TEST(EmpiricalCdf, ErrorQuotesAFieldOfNulBytesEscapedAndCut) {
+  // The field was quoted as it was: NUL bytes and a whole megabyte went into the message.
+  const auto error = [](const std::string& text) {
+    auto parsed = EmpiricalCdf::parse(text, "t.cdf");
+    const auto* message = std::get_if<std::string>(&parsed);
+    return message == nullptr ? std::string("(accepted)") : *message;
+  };
+  EXPECT_EQ(error(std::string("l\0\0\0\0\0005 u", 9)),
+            "t.cdf:1: value 'l\\x00\\x00\\x00\\x00\\x005' is not a number");
+  EXPECT_EQ(error("0 " + std::string(1 << 20, 'x')),
+            "t.cdf:1: cdf 'xxxxxxxxxxxxxxxxxxxxxxxx...' is not a number");
+  EXPECT_EQ(error("1 0\\1\n"), "t.cdf:1: cdf '0\\x5c1' is not a number");
+}
+
 }  // namespace
 }  // namespace smcbip::engines

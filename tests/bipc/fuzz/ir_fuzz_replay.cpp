@@ -1,0 +1,24 @@
+// Replays saved inputs of the IR decoder's fuzzer (crashers that were fixed) as plain tests.
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <vector>
+
+#include "fuzz_ir_data.h"
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::ifstream in(argv[i], std::ios::binary);
+    if (!in) {
+      std::cerr << "ir_fuzz_replay: cannot open " << argv[i] << "\n";
+      return 1;
+    }
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+    smcbip::bipc::fuzz::run_ir_data_on(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                       bytes.size());
+  }
+  std::cout << "replayed " << (argc - 1) << " inputs\n";
+  return 0;
+}
