@@ -175,28 +175,33 @@ TEST(Check, DeadlocksAndTimeLocksInsideABoundNeverHang) {
             std::string::npos);
 }
 
-TEST(Check, DeadlockAndTimeLockHoldInTheLastStateOfTheirRuns) {
-  // Each run deadlocks in s1 or time-locks in s2 at 3 ms: deadlock and timelock hold in the
-  // last state, so F over each is decided on every run and the two estimates, on the same runs,
-  // sum to 1 (about half each).
+TEST(Check, ATimeLockHoldsInTheLastStateOfItsRun) {
+  // Each run deadlocks in s1 or time-locks in s2 at 3 ms. timelock holds in the last state of
+  // the time-locked runs, which decides F timelock and G !timelock on them; on the deadlocked
+  // runs it never holds. So both are decided on every run and, on the same runs, sum to 1
+  // (about half each). F deadlock is undecided on the time-locked runs (what follows their last
+  // instant is unknown) and holds on the others.
   const std::optional<bipc::ir::System> system =
       smcbip::tests::load_model_text(smcbip::tests::kDeadlockOrTimeLock, "Top()");
   ASSERT_TRUE(system);
-  const monitors::PropertyFile file =
-      tests::properties("P=? [ F[0,100] timelock ]\nP=? [ F[0,100] deadlock ]\n", *system);
+  const monitors::PropertyFile file = tests::properties(
+      "P=? [ F[0,100] timelock ]\nP=? [ G[0,100] !timelock ]\nP=? [ F deadlock ]\n", *system);
   CheckOptions options;
   options.delta = 0.05;
   options.threads = 2;
+  options.undecided = UndecidedPolicy::Skip;
   const std::vector<QueryResult> results = check_properties(*system, file, options);
-  ASSERT_EQ(results.size(), 2u);
+  ASSERT_EQ(results.size(), 3u);
   for (const QueryResult& r : results) {
     EXPECT_EQ(r.error, "");
-    EXPECT_EQ(r.undecided, 0u);
     EXPECT_EQ(r.samples, chernoff_samples(0.05, 0.05));
   }
+  EXPECT_EQ(results[0].undecided + results[1].undecided, 0u);
   EXPECT_GT(results[0].estimate, 0.25);
   EXPECT_LT(results[0].estimate, 0.75);
   EXPECT_DOUBLE_EQ(results[0].estimate + results[1].estimate, 1.0);
+  EXPECT_EQ(results[2].estimate, 1.0);
+  EXPECT_GT(results[2].undecided, results[2].samples / 4);
 }
 
 TEST(Check, SkippingUndecidedRunsGivesUpInsteadOfDrawingForever) {
