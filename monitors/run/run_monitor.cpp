@@ -51,6 +51,15 @@ bool EngineState::fired(const Expr& fired) const {
          step_.atom == r.atom && step_.port == r.index;
 }
 
+double RunMonitor::first_hit_ms() const {
+  const online::Pos hit = monitor_.first_hit_for_sure();
+  if (monitor_.verdict() != Verdict::True || hit == online::kForever) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Positions count half ticks of nanoseconds.
+  return static_cast<double>(hit.t) / 2 / 1e6;
+}
+
 bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView& state) {
   return monitor_.step(EngineState(step, state), step.time) == Verdict::Undecided;
 }

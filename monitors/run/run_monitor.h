@@ -43,6 +43,8 @@ class RunMonitor final : public engines::RunObserver {
   void finish(engines::RunEnd end, int code, const std::string& message) override;
 
   Verdict verdict() const { return monitor_.verdict(); }
+  /// For F phi: the time (ms) at which phi first held, once the verdict is true; NaN otherwise.
+  double first_hit_ms() const;
   void reset() { monitor_.reset(); }
 
  private:

@@ -54,6 +54,10 @@ bool Answer::take(const Outcome& outcome, std::uint64_t index, engines::RunEnd e
                   const std::string& failure) {
   if (outcome.verdict == Verdict::Undecided) return undecided(index, end, failure);
   ++r_->samples;
+  if (r_->first_hit_horizon > 0 && outcome.verdict == Verdict::True &&
+      std::isfinite(outcome.value)) {
+    r_->first_hits.push_back(outcome.value);
+  }
   return sample(outcome.verdict == Verdict::True, outcome.value);
 }
 

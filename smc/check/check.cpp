@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -45,6 +47,25 @@ std::string exact_only(const monitors::Query& q) {
          (all ? "P>=1 [ G phi ]" : "P>0 [ F phi ]") + " tests the runs";
 }
 
+/// Up to when the first times of F phi are watched (ms): the run's time bound or F's, the
+/// nearer; 0 for a query that is no estimate of F phi within a time bound (none are kept).
+double first_hit_horizon(const monitors::Query& q, const monitors::Bindings& b) {
+  if (q.kind != monitors::Query::Kind::Estimate || !q.formula ||
+      q.formula->kind != monitors::Formula::Kind::Finally) {
+    return 0;
+  }
+  // The engines count nanoseconds; models' times and bounds are in milliseconds.
+  constexpr monitors::TimeScale kNanoseconds{1e6, 1e9};
+  double horizon = std::numeric_limits<double>::infinity();
+  const monitors::Bound* bounds[] = {&q.run, &q.formula->bound};
+  for (const monitors::Bound* bound : bounds) {
+    if (bound->kind != monitors::Bound::Kind::Time) continue;
+    const auto ticks = static_cast<double>(monitors::bound_ticks(bound->high, kNanoseconds, b));
+    horizon = std::min(horizon, ticks / 1e6);
+  }
+  return std::isfinite(horizon) ? horizon : 0;
+}
+
 /// What each point of a query is judged at.
 CheckOptions point_options(const monitors::Query& q, const QueryPoints& query,
                            const CheckOptions& options, bool simultaneous) {
@@ -71,10 +92,13 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
   const std::size_t n = query.points.size();
   const CheckOptions judged = point_options(q, query, options, simultaneous);
   std::vector<QueryResult> results(n);
-  for (QueryResult& r : results) {
+  for (std::size_t p = 0; p < n; ++p) {
+    QueryResult& r = results[p];
     r.method = judged.method;
     r.alpha = q.kind == monitors::Query::Kind::Expectation ? 1 - judged.confidence : judged.alpha;
     r.split = simultaneous && !query.swept ? n : 1;
+    if (options.first_hits && !query.swept)
+      r.first_hit_horizon = first_hit_horizon(q, query.points[p]);
   }
   if (q.kind == monitors::Query::Kind::Invariant || q.kind == monitors::Query::Kind::Reachable) {
     for (QueryResult& r : results) r.error = exact_only(q);

@@ -82,6 +82,8 @@ struct CheckOptions {
   /// --trace jsonl` writes them, each ending where its verdicts were known), named
   /// query-<q>-run-<i>.jsonl with q counted from 1 in the file and i the run index; empty: none.
   std::string save_traces;
+  /// Keep, for each estimate of F phi, when phi first held in each run (check --plot).
+  bool first_hits = false;
   /// Runs made by other processes (MPI): null for the threads of this one. On a worker
   /// process check_properties serves runs and its results mean nothing.
   RemoteRuns* remote = nullptr;
@@ -114,6 +116,10 @@ struct QueryResult {
   std::size_t split = 1;
   std::string error;  // why the query has no answer (too many undecided runs)
   std::shared_ptr<const Trajectories> trajectories;  // simulate queries
+  /// Estimates of F phi with CheckOptions::first_hits: when phi first held in each run that
+  /// satisfied it (ms), and up to when runs were watched (the run or F's bound).
+  std::vector<double> first_hits;
+  double first_hit_horizon = 0;
 };
 
 const char* method_name(Method method);

@@ -156,6 +156,7 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
       continue;
     } else if (!monitors_.empty()) {
       outcomes[p].verdict = monitors_[p]->verdict();
+      outcomes[p].value = monitors_[p]->first_hit_ms();
     } else {
       // An expectation: a run cut short before its bound has no value, and is undecided as
       // a path formula's run would be.

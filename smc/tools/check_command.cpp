@@ -13,6 +13,7 @@
 #include "bipc/output_file.h"
 #include "engines/plugin.h"
 #include "monitors/monitors.h"
+#include "smc/tools/first_hit_plot.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/progress_bar.h"
 #include "smc/tools/report.h"
@@ -111,9 +112,29 @@ bool trace_folder(const CheckCommand& check) {
   return false;
 }
 
-/// `--plot` needs a query over a parameter.
-bool plottable(const CheckCommand& check, const monitors::PropertyFile& file) {
+/// Whether check's plot draws `q`: an estimate of F phi within a time bound.
+bool first_hit_plotted(const monitors::Query& q) {
+  if (q.kind != monitors::Query::Kind::Estimate || !q.formula ||
+      q.formula->kind != monitors::Formula::Kind::Finally) {
+    return false;
+  }
+  return q.run.kind == monitors::Bound::Kind::Time ||
+         q.formula->bound.kind == monitors::Bound::Kind::Time;
+}
+
+/// `--plot` needs what it draws: explore a query over a parameter, check an estimate of F phi
+/// within a time bound (UPPAAL's Pr[<=T](<> phi)).
+bool plottable(CheckCommand& check, const monitors::PropertyFile& file) {
   if (check.plot.empty()) return true;
+  if (!check.explore) {
+    for (const monitors::Query& q : file.queries) {
+      if (first_hit_plotted(q)) check.options.first_hits = true;
+    }
+    if (check.options.first_hits) return true;
+    std::cerr << "smcbip: error: --plot: no query of " << check.properties
+              << " estimates when a formula first holds (Pr[<=T](<> phi) or P=? [ F[0,T] phi ])\n";
+    return false;
+  }
   for (const monitors::Query& q : file.queries) {
     if (sweeps_parameter(file, q)) return true;
   }
@@ -146,7 +167,9 @@ bool write_outputs(const CheckCommand& check, const Report& report) {
     ok = false;
   };
   write(check.csv, check.csv.empty() ? "" : csv_text(report));
-  write(check.plot, check.plot.empty() ? "" : sweep_svg(report));
+  if (!check.plot.empty()) {
+    write(check.plot, check.explore ? sweep_svg(report) : first_hit_svg(report));
+  }
   if (check.trajectories.empty()) return ok;
   for (const smc::QueryResult& r : report.results) {
     if (!r.trajectories) continue;
@@ -215,6 +238,14 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
                                        "NAME; repeatable)"))
       ->type_name("NAME=VALUES")
       ->check(CLI::Validator(sweep_size, "", "sweep_size"));
+  if (!explore) {
+    command
+        .add_option("--plot", check.plot,
+                    "write when F phi first holds in the runs of each estimate of it within a "
+                    "time bound (Pr[<=T](<> phi)): the cumulative probability with its band and "
+                    "the density, as SVG, to this file")
+        ->type_name("FILE");
+  }
   if (explore) {
     command.add_option("--plot", check.plot, "write the sweeps' plot (SVG) to this file")
         ->type_name("FILE");

@@ -21,12 +21,6 @@ std::string verdict_text(const smc::QueryResult& r) {
   return *r.verdict ? "holds" : "does not hold";
 }
 
-std::string parameters_text(const smc::QueryResult& r) {
-  std::string text;
-  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number_text(value);
-  return text;
-}
-
 /// Why the results of one query hold together: one band, or α split over its points.
 std::string guarantee(const smc::QueryResult& first, std::size_t points) {
   std::ostringstream out;
@@ -58,6 +52,12 @@ std::string csv_field(const std::string& text) {
 }
 
 }  // namespace
+
+std::string parameters_text(const smc::QueryResult& r) {
+  std::string text;
+  for (const auto& [name, value] : r.parameters) text += " " + name + "=" + number_text(value);
+  return text;
+}
 
 std::string number_text(double v, int digits) {
   std::ostringstream out;

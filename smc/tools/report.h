@@ -31,6 +31,8 @@ std::string number_text(double v, int digits = 6);
 
 /// A query's text without its parameters' values.
 std::string query_text(const Report& report, const smc::QueryResult& r);
+/// The values of a result's parameters, ` t=10 k=2`, or nothing.
+std::string parameters_text(const smc::QueryResult& r);
 
 /// Each result on its own lines (check).
 void print_results(std::ostream& out, const Report& report);

@@ -161,6 +161,34 @@ TEST(ContinuousClocks, SimulateFollowsTheExpressionsToTheBound) {
   }
 }
 
+TEST(ContinuousClocks, KeepsWhenPhiFirstHeldForThePlot) {
+  // F (r.s1 && r.y >= 1) first holds at T + 1 (T exponential of mean 1 ms): every first time
+  // lies in [1, 4], and the share of runs where it came by 2 ms is P(T <= 1) = 1 - e^-1, within
+  // delta = 0.01 with probability 0.99 (Hoeffding, the 26,492 runs of PESTIM at these settings).
+  const bipc::ir::System& system = tests::model_in("tests/smc/models", "clock_reset.bip");
+  CheckOptions options;
+  options.method = Method::Pestim;
+  options.delta = kDelta;
+  options.alpha = kAlpha;
+  options.seed = 37;
+  options.threads = 2;
+  options.first_hits = true;
+  const auto results = check_properties(
+      system, tests::properties("Pr[<=4](<> r.s1 && r.y >= 1)\n", system), options);
+  ASSERT_EQ(results.size(), 1u);
+  const QueryResult& r = results[0];
+  EXPECT_EQ(r.first_hit_horizon, 4.0);
+  ASSERT_EQ(r.first_hits.size(), static_cast<std::size_t>(r.estimate * r.samples + 0.5));
+  std::size_t by_two = 0;
+  for (double t : r.first_hits) {
+    EXPECT_GE(t, 1.0);
+    EXPECT_LE(t, 4.0);
+    by_two += t <= 2.0;
+  }
+  EXPECT_NEAR(static_cast<double>(by_two) / static_cast<double>(r.samples), 1 - std::exp(-1.0),
+              kDelta);
+}
+
 TEST(ContinuousClocks, PrismsSpellingsOfTheDieReadAsPrismReadsThem) {
   // P=? [ F s=7 & d=1 ] is F (s=7 & d=1) in PRISM: 1/6 (models/knuth_yao.bip).
   CheckOptions options;
