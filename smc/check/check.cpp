@@ -115,10 +115,7 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     }
     return results;
   }
-  engines::SimulateOptions simulate;
-  simulate.engine = options.engine;
-  simulate.seed = options.seed;
-  simulate.limit = options.max_steps;
+  engines::SimulateOptions simulate = run_options(options);
   simulate.silent = options.save_traces.empty();
   simulate.trace = engines::TraceFormat::Jsonl;
   const bool serving = options.remote && options.remote->serving();

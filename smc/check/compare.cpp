@@ -35,13 +35,7 @@ class PairRuns final : public engines::RunObserver {
       : externs_(engines::Externs::with_builtins()),
         left_(*q.formula, kNanoseconds, point, q.run),
         right_(*q.other, kNanoseconds, point, q.other_run) {
-    if (compiled) {
-      compiled->register_externs(externs_);
-      simulator_ = std::make_unique<engines::Simulator>(compiled->model(), options, externs_);
-    } else {
-      simulator_ = std::make_unique<engines::Simulator>(system, options, externs_);
-    }
-    if (!simulator_->problem().empty()) throw std::invalid_argument(simulator_->problem());
+    simulator_ = make_simulator(system, compiled, options, externs_);
   }
 
   void run(std::uint64_t index, PairOutcome& made) {
@@ -112,11 +106,7 @@ QueryResult compare_at(const bipc::ir::System& system, const monitors::Query& q,
     r.error = "the comparison needs 0 < delta < 0.5";
     return r;
   }
-  engines::SimulateOptions simulate;
-  simulate.engine = options.engine;
-  simulate.seed = options.seed;
-  simulate.limit = options.max_steps;
-  simulate.silent = true;
+  const engines::SimulateOptions simulate = run_options(options);
   const unsigned threads = std::max(1u, options.threads);
   std::vector<std::unique_ptr<PairRuns>> workers;
   for (unsigned w = 0; w < threads; ++w) {

@@ -78,6 +78,30 @@ class QueryRuns::Observer final : public engines::RunObserver {
   std::vector<engines::RunObserver*> observers_, watching_;
 };
 
+engines::SimulateOptions run_options(const CheckOptions& options) {
+  engines::SimulateOptions simulate;
+  simulate.engine = options.engine;
+  simulate.seed = options.seed;
+  simulate.limit = options.max_steps;
+  simulate.silent = true;
+  return simulate;
+}
+
+std::unique_ptr<engines::Simulator> make_simulator(const bipc::ir::System& system,
+                                                   const engines::PluginEntry* compiled,
+                                                   const engines::SimulateOptions& options,
+                                                   engines::Externs& externs) {
+  std::unique_ptr<engines::Simulator> simulator;
+  if (compiled) {
+    compiled->register_externs(externs);
+    simulator = std::make_unique<engines::Simulator>(compiled->model(), options, externs);
+  } else {
+    simulator = std::make_unique<engines::Simulator>(system, options, externs);
+  }
+  if (!simulator->problem().empty()) throw std::invalid_argument(simulator->problem());
+  return simulator;
+}
+
 QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry* compiled,
                      const engines::SimulateOptions& options, const QueryPoints& query)
     : externs_(engines::Externs::with_builtins()),
@@ -88,13 +112,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       traced_(!options.silent),
       trace_text_(std::make_unique<CappedText>()),
       trace_(trace_text_.get()) {
-  if (compiled) {
-    compiled->register_externs(externs_);
-    simulator_ = std::make_unique<engines::Simulator>(compiled->model(), options, externs_);
-  } else {
-    simulator_ = std::make_unique<engines::Simulator>(system, options, externs_);
-  }
-  if (!simulator_->problem().empty()) throw std::invalid_argument(simulator_->problem());
+  simulator_ = make_simulator(system, compiled, options, externs_);
   const monitors::Query& q = *query.query;
   if (query.swept) {
     double largest = 0;

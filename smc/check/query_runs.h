@@ -37,6 +37,17 @@ struct RunOutcomes {
   std::string failure;                             // the error the run ended in, if it did
 };
 
+/// How the runs of a query are made: the engine, seed and step limit of `options`, silent.
+engines::SimulateOptions run_options(const CheckOptions& options);
+
+/// A simulator of the model, or of the generated model of `compiled` when given (its externs
+/// registered into `externs`, which must outlive it). Throws std::invalid_argument when the
+/// model cannot run.
+std::unique_ptr<engines::Simulator> make_simulator(const bipc::ir::System& system,
+                                                   const engines::PluginEntry* compiled,
+                                                   const engines::SimulateOptions& options,
+                                                   engines::Externs& externs);
+
 /// Makes runs of a query's model on one thread and judges them for its points.
 class QueryRuns {
  public:

@@ -91,20 +91,9 @@ QueryResult simulate_at(const bipc::ir::System& system, const monitors::Query& q
   const auto start = std::chrono::steady_clock::now();
   QueryResult r;
   r.method = Method::Auto;
-  engines::SimulateOptions simulate;
-  simulate.engine = options.engine;
-  simulate.seed = options.seed;
-  simulate.limit = options.max_steps;
-  simulate.silent = true;
   engines::Externs externs = engines::Externs::with_builtins();
-  std::unique_ptr<engines::Simulator> simulator;
-  if (options.compiled) {
-    options.compiled->register_externs(externs);
-    simulator = std::make_unique<engines::Simulator>(options.compiled->model(), simulate, externs);
-  } else {
-    simulator = std::make_unique<engines::Simulator>(system, simulate, externs);
-  }
-  if (!simulator->problem().empty()) throw std::invalid_argument(simulator->problem());
+  const std::unique_ptr<engines::Simulator> simulator =
+      make_simulator(system, options.compiled, run_options(options), externs);
   auto made = std::make_shared<Trajectories>();
   for (const auto& e : q.series) made->series.push_back(to_string(*e));
   const auto runs =
