@@ -21,7 +21,8 @@ struct Descriptor {
   }
 };
 
-/// What a file that is not a regular one is, for messages.
+}  // namespace
+
 const char* kind_of(mode_t mode) {
   if (S_ISDIR(mode)) return "a folder";
   if (S_ISFIFO(mode)) return "a FIFO";
@@ -29,8 +30,6 @@ const char* kind_of(mode_t mode) {
   if (S_ISSOCK(mode)) return "a socket";
   return "not a regular file";
 }
-
-}  // namespace
 
 void require_input_file(const std::string& path, const std::string& what, bool streams) {
   struct stat info {};

@@ -2,6 +2,8 @@
 // FIFO or /dev/zero named as input is refused rather than read forever.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <string>
 
@@ -19,6 +21,9 @@ std::string read_input_file(const std::string& path, const std::string& what,
 /// Throws smcbip::InputError (located at `path`) unless `path` names a regular file, or, with
 /// `streams`, a FIFO or a pipe (read once, as a stream): never a folder or a device.
 void require_input_file(const std::string& path, const std::string& what, bool streams = false);
+
+/// What a file that is not a regular one is, for messages ("a folder", "a FIFO", ...).
+const char* kind_of(mode_t mode);
 
 /// The model file given to a tool: when `path` exists, throws smcbip::InputError unless it is a
 /// regular file (the front end reports a missing one among its diagnostics).

@@ -11,19 +11,9 @@
 #include <filesystem>
 #include <vector>
 
+#include "bipc/input_file.h"
+
 namespace smcbip::bipc {
-namespace {
-
-/// What a file that is not a regular one is, for messages.
-const char* kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
-}  // namespace
 
 std::string write_temporary_file(const std::string& pattern, const std::string& text) {
   std::vector<char> name(pattern.begin(), pattern.end());
