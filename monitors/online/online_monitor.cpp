@@ -407,10 +407,10 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
   last_ = at;
   ++steps_;
   if (reads_steps_) signals_.segments.push(at);
+  const Moment going_on(state, time, scale_, initial);
   for (std::size_t i = 0; i < leaves_.size(); ++i) {
     const Leaf& leaf = leaves_[i];
     Pending& pending = pending_[i];
-    const Moment going_on(state, time, scale_, initial);
     compute(leaf, going_on, time, RunEnd::Cut, pending.going_on);
     if (!leaf.reads_end) continue;
     compute(leaf, Moment(state, time, scale_, initial, RunEnd::Deadlock), time, RunEnd::Deadlock,

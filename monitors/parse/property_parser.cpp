@@ -193,30 +193,30 @@ class Parser {
     Query q;
     q.at = take().at;  // Pr
     q.pr_form = true;
-    expect("[", "after Pr (Pr[<=T] or Pr[#<=K])");
-    q.run = run_bound();
-    expect("]", "after the run bound");
-    expect("(", "before the path formula");
-    q.formula = formula();
-    expect(")", "after the path formula");
+    bounded_formula(q.run, q.formula);
     if (is_symbol(">=") || is_symbol(">") || is_symbol("<=") || is_symbol("<")) {
       q.comparison = comparison("a comparison");
       if (is_word("Pr")) {
         // Pr[<=T](phi) >= Pr[<=T2](psi): two probabilities compared (UPPAAL).
         q.kind = Query::Kind::Compare;
         take();
-        expect("[", "after Pr (Pr[<=T] or Pr[#<=K])");
-        q.other_run = run_bound();
-        expect("]", "after the run bound");
-        expect("(", "before the path formula");
-        q.other = formula();
-        expect(")", "after the path formula");
+        bounded_formula(q.other_run, q.other);
         return q;
       }
       q.kind = Query::Kind::Hypothesis;
       q.threshold = value("the probability threshold");
     }
     return q;
+  }
+
+  // `[<=T](phi)` or `[#<=K](phi)` after Pr.
+  void bounded_formula(Bound& run, std::unique_ptr<Formula>& phi) {
+    expect("[", "after Pr (Pr[<=T] or Pr[#<=K])");
+    run = run_bound();
+    expect("]", "after the run bound");
+    expect("(", "before the path formula");
+    phi = formula();
+    expect(")", "after the path formula");
   }
 
   // simulate [<=T; N] { e1, e2, ... } (UPPAAL): N runs' trajectories of the expressions.
