@@ -70,7 +70,14 @@ struct RunResult {
   RunEnd end = RunEnd::Deadlock;
   std::uint64_t steps = 0;
   std::string message;  // the error, when code is not kRunOk
+  std::string where;    // the error's `file:line:column` in the model, when known
 };
+
+/// `where: message`, or the message alone when where is empty: how observers and traces see a
+/// run's error.
+inline std::string located_message(const std::string& where, const std::string& message) {
+  return where.empty() ? message : where + ": " + message;
+}
 
 /// Where a run writes and reads: the trace, the model's own output (printf), the prompt's input.
 struct RunStreams {

@@ -80,6 +80,7 @@ struct Execution::State {
   bool started = false;
   bool over = false;  // an Error or Stopped end: nothing more happens
   RunResult result;
+  std::string ended_message;  // result's message after its place in the model (StepOutcome)
 
   State(const Model& model, const SimulateOptions& options, std::ostream& out)
       : shared(model, options), model_output(out) {}
@@ -96,15 +97,17 @@ struct Execution::State {
     outcome.ended = true;
     outcome.end = result.end;
     outcome.code = result.code;
-    outcome.message = result.message;
+    outcome.message = ended_message;
     return outcome;
   }
   /// Ends the run as `end` with the scheduler's error, or none; tells the observer.
   StepOutcome end(RunEnd end, bool error) {
-    result = {error ? scheduler->error().code : kRunOk, end, scheduler->steps(),
-              error ? scheduler->error().message : std::string()};
+    const ModelError none;
+    const ModelError& why = error ? scheduler->error() : none;
+    result = {why.code, end, scheduler->steps(), why.message, why.where};
+    ended_message = located_message(why.where, why.message);
     over = error || end == RunEnd::Stopped;
-    if (observer) observer->finish(result.end, result.code, result.message);
+    if (observer) observer->finish(result.end, result.code, ended_message);
     return ended_outcome();
   }
   /// The pending decision, deciding it when there is none; an End decision ends the run (once).
@@ -198,7 +201,8 @@ bool Execution::start(std::optional<std::uint64_t> run_index) {
   s.over = false;
   s.result = {};
   if (!s.shared.problem.empty()) {
-    s.result = {kInputError, RunEnd::Error, 0, s.shared.problem};
+    s.result = {kInputError, RunEnd::Error, 0, s.shared.problem, {}};
+    s.ended_message = s.shared.problem;
     s.over = true;
     return false;
   }

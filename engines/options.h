@@ -78,8 +78,9 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
 }
 
 /// `smcbip simulate`'s run of a model once loaded: the trace on stdout, the model's output on
-/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by `where` (the
-/// model file), or by `tool` without one; returns the exit code (the RunCode).
+/// stdout (stderr with a JSON-lines trace), input errors on stderr prefixed by their place in
+/// the model when known, else by `where` (the model file), else by `tool`; returns the exit code
+/// (the RunCode).
 inline int run_simulation(const Model& model, const SimulateOptions& options,
                           const Externs& externs, const std::string& tool,
                           const std::string& where = "") {
@@ -91,7 +92,8 @@ inline int run_simulation(const Model& model, const SimulateOptions& options,
       simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
   std::cout.flush();
   if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
-    std::cerr << (where.empty() ? tool : where) << ": error: " << run.message << "\n";
+    const std::string& at = !run.where.empty() ? run.where : where.empty() ? tool : where;
+    std::cerr << at << ": error: " << run.message << "\n";
   }
   return run.code;
 }

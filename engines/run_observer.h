@@ -69,7 +69,7 @@ class RunObserver {
   /// Called with the initial state, then after every step; returning false stops the run.
   virtual bool observe(const StepInfo& step, const StateView& state) = 0;
   /// Called once when the run ends (also when an observer stopped it); `message` names the
-  /// error of an Error end.
+  /// error of an Error end, after its `file:line:column: ` in the model when known.
   virtual void finish(RunEnd /*end*/, int /*code*/, const std::string& /*message*/) {}
 };
 

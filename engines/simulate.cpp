@@ -78,7 +78,7 @@ class Simulation {
     const ExplorationCounts counts =
         explore_states(runtime_, options_.limit, options_.max_explored_states);
     write_exploration(out_, counts);
-    return {kRunOk, counts.cut ? RunEnd::Limit : RunEnd::Deadlock, counts.states, {}};
+    return {kRunOk, counts.cut ? RunEnd::Limit : RunEnd::Deadlock, counts.states, {}, {}};
   }
 
   RunResult run() {
@@ -156,11 +156,11 @@ class Simulation {
           if (!observe(info)) return stopped();
           continue;
         case CompiledSteps::Outcome::Deadlock:
-          return end({kRunOk, RunEnd::Deadlock, steps_, {}});
+          return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
         case CompiledSteps::Outcome::Timelock:
-          return end({kRunOk, RunEnd::Timelock, steps_, {}});
+          return end({kRunOk, RunEnd::Timelock, steps_, {}, {}});
         case CompiledSteps::Outcome::Limit:
-          return end({kRunOk, RunEnd::Limit, steps_, {}});
+          return end({kRunOk, RunEnd::Limit, steps_, {}, {}});
         case CompiledSteps::Outcome::Beyond:
           return std::nullopt;
       }
@@ -186,42 +186,42 @@ class Simulation {
   }
 
   RunResult end(RunResult result) {
-    observer_.finish(result.end, result.code, result.message);
+    observer_.finish(result.end, result.code, located_message(result.where, result.message));
     return result;
   }
 
-  RunResult stopped() { return end({kRunOk, RunEnd::Stopped, steps_, {}}); }
+  RunResult stopped() { return end({kRunOk, RunEnd::Stopped, steps_, {}, {}}); }
 
-  RunResult fail(int code, const std::string& message) {
-    if (options_.trace == TraceFormat::Text || code == kTimeSafetyViolation) {
-      line("ERROR: " + message);
+  RunResult fail(const ModelError& error) {
+    if (options_.trace == TraceFormat::Text || error.code == kTimeSafetyViolation) {
+      line("ERROR: " + error.message);
     }
-    error_result_ = {code, RunEnd::Error, steps_, message};
+    error_result_ = {error.code, RunEnd::Error, steps_, error.message, error.where};
     return end(error_result_);
   }
 
   /// The scheduler's error (steps_ counts the steps before the failing one).
   RunResult error() {
     steps_ = scheduler_.steps();
-    return fail(scheduler_.error().code, scheduler_.error().message);
+    return fail(scheduler_.error());
   }
-  RunResult runtime_error() { return fail(runtime_.error().code, runtime_.error().message); }
+  RunResult runtime_error() { return fail(runtime_.error()); }
 
   /// How the run ends after an End decision.
   RunResult finish(const Decision& decision) {
     switch (decision.end) {
       case RunEnd::Deadlock:
         header("deadlock!");
-        return end({kRunOk, RunEnd::Deadlock, steps_, {}});
+        return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
       case RunEnd::Timelock: {
         const Interval w = runtime_.wait_interval();
         header(std::string("time-lock ") + (w.right_open ? "right before " : "at ") +
                format_time(w.right) + "!");
-        return end({kRunOk, RunEnd::Timelock, steps_, {}});
+        return end({kRunOk, RunEnd::Timelock, steps_, {}, {}});
       }
       case RunEnd::Limit:
         header("stop (reached limit of " + std::to_string(*options_.limit) + " states)");
-        return end({kRunOk, RunEnd::Limit, steps_, {}});
+        return end({kRunOk, RunEnd::Limit, steps_, {}, {}});
       case RunEnd::Stopped:
         return stopped();
       case RunEnd::Error:
@@ -264,7 +264,7 @@ class Simulation {
         out_ << kEnginePrefix << "  " << text << "\n";
       }
       if (!tolerated) {
-        error_result_ = {kTimeSafetyViolation, RunEnd::Error, steps_, "time-safety violation"};
+        error_result_ = {kTimeSafetyViolation, RunEnd::Error, steps_, "time-safety violation", {}};
         end(error_result_);
         return false;
       }
@@ -314,7 +314,7 @@ std::uint64_t Simulator::seed() const { return shared_->seed; }
 
 RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
                          RunObserver* observer) {
-  if (!shared_->problem.empty()) return {kInputError, RunEnd::Error, 0, shared_->problem};
+  if (!shared_->problem.empty()) return {kInputError, RunEnd::Error, 0, shared_->problem, {}};
   std::optional<JsonlTrace> jsonl;
   if (shared_->options.trace == TraceFormat::Jsonl && !shared_->options.silent) {
     jsonl.emplace(streams.trace, shared_->layout, shared_->seed, run_index);

@@ -28,6 +28,9 @@ std::string constant(const char* type, Enum value) {
 }
 
 /// An integer literal valid for every int64 (the most negative one has no literal of its own).
+/// An Instr::site (kNone included) as an unsigned literal.
+std::string site_literal(ir::Index site) { return std::to_string(site) + "u"; }
+
 std::string int_literal(std::int64_t v) {
   if (v == std::numeric_limits<std::int64_t>::min()) return "(-INT64_C(9223372036854775807) - 1)";
   return "INT64_C(" + std::to_string(v) + ")";
@@ -124,7 +127,9 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
            ", c.call.strings));";
   }
   if (ir::is_binary(in.op)) {
-    return below + " = ops::arithmetic(" + op + ", " + kind + ", " + below + ", " + top + ");";
+    const std::string site = in.site == ir::kNone ? "" : ", " + site_literal(in.site);
+    return below + " = ops::arithmetic(" + op + ", " + kind + ", " + below + ", " + top + site +
+           ");";
   }
   switch (in.op) {
     case Op::PushBool:
@@ -153,7 +158,7 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
       const int first = d - static_cast<int>(in.arg);
       std::string text = "{ const se::Val r = ops::call_extern(c.system, c.functions, c.call, " +
                          std::to_string(in.index) + ", " + std::to_string(in.arg) + ", s + " +
-                         std::to_string(d) + ");";
+                         std::to_string(d) + ", " + site_literal(in.site) + ");";
       if (system.functions.at(in.index).result) {
         text += " s[" + std::to_string(first) + "] = r;";
       } else {

@@ -100,6 +100,9 @@ struct Instr {
   Scope scope = Scope::AtomData;
   std::uint16_t arg = 0;
   Index index = 0;
+  /// Div, Mod and Call, which can fault at run time: where the operator or call was written
+  /// (System::sites), so the fault names that place; kNone elsewhere.
+  Index site = kNone;
   union {
     bool b;
     std::int64_t i;
@@ -350,6 +353,10 @@ struct System {
   // names them, headers as written, and those folders as include directories.
   std::vector<std::string> cpp_includes, cpp_sources, cpp_include_dirs;
   std::uint32_t code_count = 0;  // Code::id runs from 0 to code_count - 1
+  /// The source locations Instr::site names, and the files a Location's `file` indexes (the
+  /// front end's SourceFiles): what run-time faults are reported at.
+  std::vector<Location> sites;
+  std::vector<std::string> source_files;
 };
 
 /// What a Code is for, as the engines run it.

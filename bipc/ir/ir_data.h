@@ -5,9 +5,9 @@
 // projects embed it, and model_hash.h hashes it.
 //
 // Layout: each struct of ir.h is a JSON object whose keys are the C++ field names, except
-//  - an Instr, the bulk of the data, which is an array [op, kind, scope, arg, index, imm] where
-//    imm is the union member the op reads: a boolean for push_bool, a float for push_float,
-//    an integer (imm.i) for every other op;
+//  - an Instr, the bulk of the data, which is an array [op, kind, scope, arg, index, imm, site]
+//    where imm is the union member the op reads: a boolean for push_bool, a float for
+//    push_float, an integer (imm.i) for every other op;
 //  - a Location, which is an array [file, line, column];
 //  - pairs (typed parameters, connector ports, annotation parameters, exported data), which are
 //    two-element arrays;
@@ -18,7 +18,8 @@
 // when finite; infinities and NaNs (a float literal may fold to one, and a @stochastic
 // parameter may read "inf") are the string "f64:" followed by the 16 lowercase hex digits of
 // their IEEE-754 bits, since JSON text has no spelling for them and CBOR would drop a NaN's
-// payload. The top-level object also carries "format": "smcbip-ir" and "version": 1.
+// payload. The top-level object also carries "format": "smcbip-ir" and "version": 2
+// (version 2 added Instr::site, System::sites and System::source_files).
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,7 @@
 namespace smcbip::bipc::ir {
 
 /// The encoding's version, in the "version" field; from_data accepts only this one.
-inline constexpr int kIrDataVersion = 1;
+inline constexpr int kIrDataVersion = 2;
 
 /// Malformed input to from_data or from_bytes. `message` names the offending field by its path
 /// from the top, e.g. `atom_types[2].transitions[0].guard.instrs[3][4]: index 7 out of range`.
@@ -51,9 +52,9 @@ nlohmann::json to_data(const System& system);
 ///  - integers fit their C++ type; enumeration names and "f64:" strings are known spellings;
 ///  - "format" is "smcbip-ir" and "version" is kIrDataVersion;
 ///  - every index an engine or generator would follow is in range: types of instances, parents
-///    and children, port types, data slots, places, ports, clocks, extern types, functions and
-///    strings named by instructions, PortRefs, priority sides, exported data, connectors'
-///    bound_by; kNone only where ir.h allows it (internal transitions, wildcards, the root's
+///    and children, port types, data slots, places, ports, clocks, extern types, functions,
+///    strings and sites named by instructions, PortRefs, priority sides, exported data,
+///    connectors' bound_by; kNone only where ir.h allows it (internal transitions, wildcards, the root's
 ///    parent, non-extern data types, ...);
 ///  - per instruction, the slot a load or store names exists in its code's context (atom code:
 ///    atom data, parameters and clocks; connector code: connector data and port parameters;

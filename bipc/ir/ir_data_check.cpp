@@ -108,6 +108,7 @@ class Checker {
   }
 
   void instr(const Instr& in, std::size_t length, const Path& path, const CodeContext& c) {
+    none_or_in_range(in.site, s_.sites.size(), path.item(6), "sites");
     const Path index = path.item(4);
     switch (in.op) {
       case Op::PushString:

@@ -60,7 +60,7 @@ Value read_value(const Field& f) {
 }
 
 Instr read_instr(const Field& f) {
-  read_array(f, 6);
+  read_array(f, 7);
   Instr in;
   in.op = read_enum<Op>(element(f, 0), detail::kOpNames);
   in.kind = read_enum<ValueKind>(element(f, 1), detail::kValueKindNames);
@@ -78,6 +78,7 @@ Instr read_instr(const Field& f) {
       in.imm.i = read_int<std::int64_t>(element(f, 5));
       break;
   }
+  in.site = read_index(element(f, 6));
   return in;
 }
 
@@ -398,6 +399,8 @@ System from_data(const nlohmann::json& data) {
   s.cpp_sources = read_strings(o["cpp_sources"]);
   s.cpp_include_dirs = read_strings(o["cpp_include_dirs"]);
   s.code_count = read_int<std::uint32_t>(o["code_count"]);
+  s.sites = read_list(o["sites"], read_location);
+  s.source_files = read_strings(o["source_files"]);
   o.done();
   detail::check_references(s);
   return s;

@@ -77,7 +77,7 @@ json instr_data(const Instr& in) {
   }
   return json::array({name_of(detail::kOpNames, in.op), name_of(detail::kValueKindNames, in.kind),
                       name_of(detail::kScopeNames, in.scope), in.arg, index_data(in.index),
-                      std::move(imm)});
+                      std::move(imm), index_data(in.site)});
 }
 
 json code_data(const Code& code) {
@@ -356,6 +356,10 @@ nlohmann::json to_data(const System& s) {
   out["cpp_sources"] = s.cpp_sources;
   out["cpp_include_dirs"] = s.cpp_include_dirs;
   out["code_count"] = s.code_count;
+  json sites = json::array();
+  for (const Location& loc : s.sites) sites.push_back(location_data(loc));
+  out["sites"] = std::move(sites);
+  out["source_files"] = s.source_files;
   return out;
 }
 

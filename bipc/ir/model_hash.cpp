@@ -41,6 +41,9 @@ std::string read_source(const fs::path& path, const std::string& name) {
   return contents.str();
 }
 
+/// Where an Instr's array holds its site (ir_data.h): a source location too.
+constexpr std::size_t kInstrSite = 6;
+
 /// Every source location under `data` set to null, every empirical CDF file named by its file
 /// name alone (see model_hash.h).
 void drop_locations(nlohmann::json& data) {
@@ -52,6 +55,8 @@ void drop_locations(nlohmann::json& data) {
   for (auto& [key, value] : data.items()) {
     if (key == "loc") {
       value = nullptr;
+    } else if (key == "instrs") {
+      for (nlohmann::json& instr : value) instr.erase(kInstrSite);
     } else if (key == "custom_file" && value.is_string()) {
       value = fs::path(value.get<std::string>()).filename().string();
     } else {
@@ -67,6 +72,8 @@ std::vector<std::uint8_t> normalised_bytes(const System& system) {
     source = fs::path(source.get<std::string>()).filename().string();
   }
   data["cpp_include_dirs"] = nlohmann::json::array();
+  data.erase("sites");
+  data.erase("source_files");
   return nlohmann::json::to_cbor(data);
 }
 

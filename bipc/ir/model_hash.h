@@ -27,6 +27,7 @@ using ExternSources = std::vector<ExternSource>;
 ///
 /// where u64le(n) is n as 8 bytes, least significant first, and normalised() drops what only
 /// says where the model is stored or written: every source location ("loc") becomes null,
+/// instructions lose their site and the system its `sites` and `source_files`,
 /// `cpp_sources` and empirical CDF files (`custom_file`) keep their file names alone and
 /// `cpp_include_dirs` is emptied. So a model
 /// keeps its hash when its files move or gain comments, and changes it with anything that

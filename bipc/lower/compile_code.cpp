@@ -268,6 +268,7 @@ CodeCompiler::Shape CodeCompiler::call(const ast::Expr& e, const ast::ExternFunc
   ir::Instr in = make(Op::Call, result);
   in.index = lowering_.function(f);
   in.arg = static_cast<std::uint16_t>(check_arg(e.operands.size(), e.loc));
+  in.site = lowering_.site(e.loc);
   out.push_back(in);
   return {result, false};
 }
@@ -321,7 +322,9 @@ CodeCompiler::Shape CodeCompiler::binary(const ast::Expr& e, Instrs& out) {
       convert_at_end(out, rhs.kind, ValueKind::Float);
     }
   }
-  out.push_back(make(binary_op(e.binary), kind));
+  ir::Instr operation = make(binary_op(e.binary), kind);
+  if (operation.op == Op::Div || operation.op == Op::Mod) operation.site = lowering_.site(e.loc);
+  out.push_back(operation);
   const Shape shape{is_comparison(e.binary) ? ValueKind::Bool : kind, lhs.constant && rhs.constant};
   fold(begin, shape, out);
   return shape;

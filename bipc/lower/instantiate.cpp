@@ -462,6 +462,7 @@ std::optional<ir::System> instantiate(const LoadedModel& model, const ast::Compo
   lower::Instantiator(model, system, diags).run(root);
   if (diags.error_count() > errors_before) return std::nullopt;
   ir::number_code(system);
+  system.source_files = model.files.paths;
   return system;
 }
 

@@ -47,6 +47,14 @@ ir::Index Lowering::string(const std::string& text) {
   return it->second;
 }
 
+ir::Index Lowering::site(Location at) {
+  // Each instance's code is compiled again: its sites are shared, not repeated.
+  auto [it, inserted] = sites_.try_emplace(std::tuple(at.file, at.line, at.column),
+                                           static_cast<ir::Index>(system_.sites.size()));
+  if (inserted) system_.sites.push_back(at);
+  return it->second;
+}
+
 ir::DataType Lowering::data_type(const ast::ValueType& type) {
   ir::DataType result;
   result.kind = value_kind(type);

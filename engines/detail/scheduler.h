@@ -197,7 +197,7 @@ inline std::pair<std::size_t, TimeValue> Scheduler::random_choice() {
 /// Stochastic mode: the earliest planned date that lies in its item's window wins.
 inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::race(bool& failed) {
   if (!planner_.plan(runtime_, dates_, planner_problem_)) {
-    error_ = {kInputError, planner_problem_};
+    error_ = {kInputError, planner_problem_, {}};
     failed = true;
     return std::nullopt;
   }

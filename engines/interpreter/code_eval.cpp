@@ -96,7 +96,7 @@ void CodeEvaluator::execute(const bipc::ir::Code& code, const Frame& frame) {
 
 Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& functions,
                           CallContext& call, Index function, std::size_t count,
-                          const Val* args_end) {
+                          const Val* args_end, Index site) {
   const Externs::Function* f = functions.functions[function];
   const std::vector<ValueKind>& kinds = functions.arg_kinds[function];
   if (!f) {
@@ -105,7 +105,7 @@ Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& 
     for (std::size_t i = 0; i < kinds.size(); ++i) {
       signature += (i ? ", " : "") + std::string(bipc::ir::value_kind_name(kinds[i]));
     }
-    throw CodeFault{"extern function " + signature + ") has no implementation"};
+    throw CodeFault{"extern function " + signature + ") has no implementation", site};
   }
   const std::span<const Val> args(args_end - count, count);
   // Variadic calls see their own argument kinds; the IR declares them per call site.
@@ -157,7 +157,7 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
     case Op::BitOr:
     case Op::BitXor:
       --sp;
-      sp[-1] = arithmetic(in.op, in.kind, sp[-1], *sp);
+      sp[-1] = arithmetic(in.op, in.kind, sp[-1], *sp, in.site);
       return sp;
     case Op::Eq:
     case Op::Ne:
@@ -172,7 +172,7 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
       sp[-1] = make_float(static_cast<double>(sp[-1].i));
       return sp;
     case Op::Call: {
-      const Val result = code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp);
+      const Val result = code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp, in.site);
       sp -= in.arg;
       if (system_.functions[in.index].result) *sp++ = result;
       return sp;

@@ -39,9 +39,11 @@ struct Frame {
 };
 
 /// A run-time fault of model code (division by zero, unknown extern), reported as an error of
-/// the run naming the atom or connector, with kInputError: the model's fault, not the tool's.
+/// the run at the instruction's source location, with kInputError: the model's fault, not the
+/// tool's.
 struct CodeFault {
   std::string message;
+  bipc::ir::Index site = bipc::ir::kNone;  // System::sites, where the faulting code was written
 };
 
 /// The extern functions a system's calls resolve to, looked up once per model.

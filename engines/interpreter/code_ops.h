@@ -114,8 +114,10 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
   }
 }
 
-/// Add..BitXor on operands of `kind`; division and modulo by zero are faults.
-[[gnu::always_inline]] inline Val arithmetic(Op op, ValueKind kind, Val a, Val b) {
+/// Add..BitXor on operands of `kind`; division and modulo by zero are faults at `site`
+/// (Instr::site).
+[[gnu::always_inline]] inline Val arithmetic(Op op, ValueKind kind, Val a, Val b,
+                                             Index site = bipc::ir::kNone) {
   if (kind == ValueKind::Float) {
     switch (op) {
       case Op::Add:
@@ -125,10 +127,10 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
       case Op::Mul:
         return make_float(a.f * b.f);
       case Op::Div:
-        if (b.f == 0.0) throw CodeFault{"division by zero"};
+        if (b.f == 0.0) throw CodeFault{"division by zero", site};
         return make_float(a.f / b.f);
       default:
-        if (b.f == 0.0) throw CodeFault{"modulo by zero"};
+        if (b.f == 0.0) throw CodeFault{"modulo by zero", site};
         return make_float(std::fmod(a.f, b.f));
     }
   }
@@ -140,11 +142,11 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
     case Op::Mul:
       return make_int(wrap_mul(a.i, b.i));
     case Op::Div:
-      if (b.i == 0) throw CodeFault{"division by zero"};
+      if (b.i == 0) throw CodeFault{"division by zero", site};
       if (b.i == -1) return make_int(wrap_sub(0, a.i));
       return make_int(a.i / b.i);
     case Op::Mod:
-      if (b.i == 0) throw CodeFault{"modulo by zero"};
+      if (b.i == 0) throw CodeFault{"modulo by zero", site};
       if (b.i == -1) return make_int(0);
       return make_int(a.i % b.i);
     case Op::BitAnd:
@@ -157,8 +159,8 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
 }
 
 /// Call: extern function `function` of the system on the `count` values ending at `args_end`;
-/// a function without an implementation is a fault naming its signature.
+/// a function without an implementation is a fault naming its signature, at `site`.
 Val call_extern(const bipc::ir::System& system, const BoundFunctions& functions, CallContext& call,
-                Index function, std::size_t count, const Val* args_end);
+                Index function, std::size_t count, const Val* args_end, Index site);
 
 }  // namespace smcbip::engines::code_ops

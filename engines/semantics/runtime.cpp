@@ -85,8 +85,24 @@ void Runtime::note_time_bound(Index atom) {
 }
 
 bool Runtime::fail(int code, std::string message) {
-  error_ = {code, std::move(message)};
+  error_ = {code, std::move(message), {}};
   return false;
+}
+
+bool Runtime::fail(const CodeFault& fault) {
+  error_ = fault_error(fault);
+  return false;
+}
+
+ModelError Runtime::fault_error(const CodeFault& fault) const {
+  const bool known = fault.site < system_.sites.size();
+  return {kInputError, fault.message, known ? where(system_.sites[fault.site]) : std::string()};
+}
+
+std::string Runtime::where(const bipc::Location& at) const {
+  if (at.line == 0 || at.file >= system_.source_files.size()) return {};
+  return system_.source_files[at.file] + ":" + std::to_string(at.line) + ":" +
+         std::to_string(at.column);
 }
 
 Frame Runtime::atom_frame(const AtomScratch& s, Index atom) {
@@ -158,7 +174,7 @@ bool Runtime::initialize() {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(kInputError, fault.message);
+    return fail(fault);
   }
   return check_compound_priority_cycles();
 }
@@ -208,10 +224,12 @@ bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   const auto not_safe = [&] {
     const bool labelled = label != kNone && !type.ports[label].is_extern;
-    return s.fail(2, "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
-                         (labelled ? "executing a transition labelled by " + type.ports[label].name
-                                   : std::string("executing an internal transition")) +
-                         ")");
+    return s.fail(2,
+                  "the Peri net of " + layout_.atom_names[atom] + " is not 1-safe! (when " +
+                      (labelled ? "executing a transition labelled by " + type.ports[label].name
+                                : std::string("executing an internal transition")) +
+                      ")",
+                  where(t.loc));
   };
   if (const Index type_index = system_.atoms[atom].type; compiled_type_[type_index]) {
     if (!s.eval.atom_fire(type_index, transition, &state_.marking[base], f)) {
@@ -441,7 +459,7 @@ bool Runtime::compute_items() {
     compute_values(full);
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
-    return fail(kInputError, fault.message);
+    return fail(fault);
   } catch (const UnsupportedRun& unsupported) {
     cache_.invalidate_all();
     return fail(kInputError, unsupported.message);
@@ -605,7 +623,7 @@ bool Runtime::restore(const RunState& state) {
       if (!state_.resume_pending[a] && !update_atom(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(kInputError, fault.message);
+    return fail(fault);
   }
   return true;
 }
@@ -619,7 +637,7 @@ bool Runtime::execute(const Item& item, TimeValue at) {
     if (item.kind == Item::Kind::External) return fire_extern(item);
     return fire_port(item.atom, item.port);
   } catch (const CodeFault& fault) {
-    return fail(kInputError, fault.message);
+    return fail(fault);
   }
 }
 
@@ -630,7 +648,7 @@ bool Runtime::write_data(Index atom, Index slot, Val value) {
     if (!check_invariants(atom) || !run_internal_transitions(atom)) return false;
     return state_.resume_pending[atom] || update_atom(atom);
   } catch (const CodeFault& fault) {
-    return fail(kInputError, fault.message);
+    return fail(fault);
   }
 }
 

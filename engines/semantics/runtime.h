@@ -95,10 +95,12 @@ struct RuntimeOptions {
   std::size_t parallel_min_work = 1000;
 };
 
-/// A run-time error of the model, with the reference engine's code and message.
+/// A run-time error of the model, with the reference engine's code and message, and where in
+/// the model's source it arose (`file:line:column`, empty when unknown).
 struct ModelError {
   int code = 0;
   std::string message;
+  std::string where;
 };
 
 /// A state the engines cannot compute (thrown inside compute_items, reported as an input error).
@@ -214,8 +216,8 @@ class Runtime {
     /// Firing on a worker thread: the scheduler's shared bookkeeping is left to the caller.
     bool on_worker = false;
     AtomPriorityBuffers* priorities = nullptr;  // the thread's own
-    bool fail(int code, std::string message) const {
-      error = {code, std::move(message)};
+    bool fail(int code, std::string message, std::string where = {}) const {
+      error = {code, std::move(message), std::move(where)};
       return false;
     }
   };
@@ -360,6 +362,11 @@ class Runtime {
   bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
   bool fire_port(const AtomScratch& s, Index atom, Index port);
   bool fail(int code, std::string message);
+  /// A fault of the model's code, at the source location of its instruction.
+  bool fail(const CodeFault& fault);
+  ModelError fault_error(const CodeFault& fault) const;
+  /// `file:line:column` of a source location of the model; empty when unknown.
+  std::string where(const bipc::Location& at) const;
   void append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const;
   bool open_extern_ports();
   /// Pulls the extern ports' next events and decides which ports take theirs (expected).

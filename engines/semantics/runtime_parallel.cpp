@@ -103,7 +103,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
   // never read, so running the downs early changes no value. A down that faults stops the
   // reference engine after the atoms before it: only those fire, and their errors come first.
   std::size_t before_fault = p.ports.size();
-  std::optional<std::string> fault;
+  std::optional<CodeFault> fault;
   std::size_t atoms_so_far = 0;
   std::function<void(Index)> downs = [&](Index value) {
     run_down(value);
@@ -118,7 +118,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
   try {
     downs(index);
   } catch (const CodeFault& f) {
-    fault = f.message;
+    fault = f;
     before_fault = atoms_so_far;
   }
 
@@ -135,7 +135,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
     try {
       p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
-      s.fail(kInputError, f.message);
+      s.error = fault_error(f);
     } catch (...) {
       // A user extern declared pure threw: no error channel on a worker thread.
       std::terminate();
@@ -152,7 +152,7 @@ bool Runtime::execute_value_in_parallel(Index index) {
       return false;
     }
   }
-  if (fault) return fail(kInputError, *fault);
+  if (fault) return fail(*fault);
   return true;
 }
 

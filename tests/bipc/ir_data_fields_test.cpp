@@ -80,6 +80,8 @@ std::vector<Mutation> system_mutations() {
       {"cpp_sources", [](ir::System& s) { s.cpp_sources[0] = "src/other.cpp"; }},
       {"cpp_include_dirs", [](ir::System& s) { s.cpp_include_dirs.push_back("more"); }},
       {"code_count", [](ir::System& s) { ++s.code_count; }},
+      {"sites", [](ir::System& s) { s.sites[1].column = 6; }},
+      {"source_files", [](ir::System& s) { s.source_files.pop_back(); }},
   };
 }
 
@@ -90,6 +92,7 @@ std::vector<Mutation> code_mutations() {
       {"Instr.scope", [](ir::System& s) { instr(s, 0).scope = Scope::AtomParam; }},
       {"Instr.arg", [](ir::System& s) { instr(s, 2).arg = 9; }},
       {"Instr.index", [](ir::System& s) { instr(s, 0).index = 1; }},
+      {"Instr.site", [](ir::System& s) { instr(s, 2).site = 0; }},
       {"Instr.imm.i", [](ir::System& s) { instr(s, 1).imm.i = 4; }},
       {"Instr.imm.f", [](ir::System& s) { transition(s).action.instrs[0].imm.f = 0.0; }},
       {"Instr.imm.b",

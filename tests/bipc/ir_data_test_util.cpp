@@ -120,9 +120,10 @@ ir::AtomType atom_type() {
                   instr(Op::Eq, ValueKind::String),
                   instr(Op::JumpIfFalseKeep, ValueKind::Bool, Scope::AtomData, 5), push_bool(true),
                   instr(Op::Not, ValueKind::Bool)});
+  ir::Instr call = instr(Op::Call, ValueKind::Float, Scope::AtomData, 0, 1);
+  call.site = 1;
   b.action = code({push_float(2.0), instr(Op::StoreRate, ValueKind::Float, Scope::Clock, 1),
-                   instr(Op::Load, ValueKind::Extern, Scope::AtomData, 1),
-                   instr(Op::Call, ValueKind::Float, Scope::AtomData, 0, 1),
+                   instr(Op::Load, ValueKind::Extern, Scope::AtomData, 1), call,
                    instr(Op::Pop, ValueKind::Void)});
   b.urgency = ir::Urgency::Delayable;
   t.transitions = {a, b};
@@ -246,6 +247,8 @@ ir::System sample_system() {
   s.cpp_includes = {"geo.hpp", "stdio.h"};
   s.cpp_sources = {"src/geo.cpp"};
   s.cpp_include_dirs = {"src"};
+  s.sites = {{0, 3, 9}, {1, 12, 5}};
+  s.source_files = {"models/pkg.bip", "models/dep.bip"};
   ir::number_code(s);
   return s;
 }

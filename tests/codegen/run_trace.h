@@ -13,8 +13,9 @@
 namespace smcbip::tests {
 
 /// The whole output of run 0 of `model` on `engine` with `seed`, at most `limit` steps, then
-/// its exit code; then the same run's JSON-lines trace (the optimised engine takes the compiled
-/// step path there, where a model has one) and exit code. The multithread engine uses two
+/// its exit code and error (with its place in the model); then the same run's JSON-lines trace
+/// (the optimised engine takes the compiled step path there, where a model has one) and exit
+/// code. The multithread engine uses two
 /// threads, firing atoms on them from `parallel_min_work` instructions of work.
 inline std::string run_trace(const engines::Model& model, engines::EngineKind engine,
                              std::uint64_t seed, std::uint64_t limit,
@@ -31,7 +32,7 @@ inline std::string run_trace(const engines::Model& model, engines::EngineKind en
     engines::Simulator simulator(model, options, engines::Externs::with_builtins());
     const engines::RunResult result = simulator.run(0, engines::RunStreams{out, out});
     out << "\nexit " << result.code << " after " << result.steps << " steps: " << result.message
-        << "\n";
+        << " at " << result.where << "\n";
   }
   return out.str();
 }

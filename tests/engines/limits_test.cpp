@@ -45,7 +45,7 @@ std::string broadcast_model(int receivers, const std::string& extra = "", bool t
 RunResult run_text(const std::string& model, std::ostringstream& out,
                    EngineKind engine = EngineKind::Reference) {
   const std::optional<bipc::ir::System> system = tests::load_model_text(model, "Top()");
-  if (!system) return {kInputError, RunEnd::Error, 0, "the test model does not load"};
+  if (!system) return {kInputError, RunEnd::Error, 0, "the test model does not load", {}};
   SimulateOptions options;
   options.engine = engine;
   options.seed = 1;

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -60,6 +62,8 @@ class Lowering {
 
   /// Index of a string literal in System::strings (each distinct string once).
   ir::Index string(const std::string& text);
+  /// Index in System::sites of an instruction written at `at` that can fault at run time.
+  ir::Index site(Location at);
   /// The value of a package constant, evaluated once; nullopt (reported) when not constant.
   std::optional<ir::Value> constant(const ast::ConstDataDecl& decl);
 
@@ -86,6 +90,7 @@ class Lowering {
   std::unordered_map<const void*, const ast::Package*> package_of_;
   std::unordered_map<const void*, ir::Index> types_;  // every lowered declaration
   NameIndex strings_;
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, ir::Index> sites_;
   std::unordered_map<const ast::ConstDataDecl*, std::optional<ir::Value>> constants_;
   std::unordered_set<const ast::ConstDataDecl*> evaluating_;  // guards against cycles
   std::vector<NameIndex> atom_interface_, atom_data_;         // per atom type
