@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bipc/errors.h"
 #include "monitors/online/growing_truth.h"
 #include "monitors/online/nodes.h"
 #include "monitors/online/signal.h"
@@ -94,10 +95,13 @@ online::Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings&
 /// `v` as a whole number (a step count) at least 0. Throws MonitorError.
 std::int64_t bound_steps(const Value& v, const Bindings& bindings);
 
-/// A formula the monitor cannot take: a bound not a whole number of ticks, an unbound name.
-class MonitorError : public std::runtime_error {
+/// A formula the monitor cannot take: a bound not a whole number of ticks, an unbound name, a
+/// division by zero. An input error at `at` in the property file (whose path the caller knows:
+/// `at.file` indexes its sources).
+class MonitorError : public InputError {
  public:
-  MonitorError(Location at, const std::string& message) : std::runtime_error(message), at(at) {}
+  MonitorError(Location at, const std::string& message)
+      : InputError(message, ErrorLocation{{}, at.line, at.column}), at(at) {}
   Location at;
 };
 

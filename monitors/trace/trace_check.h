@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bipc/diagnostics.h"
+#include "bipc/errors.h"
 #include "monitors/online/online_monitor.h"
 #include "monitors/property/ast.h"
 
@@ -28,11 +29,13 @@ struct TraceFault {
 inline constexpr std::size_t kMaxTraceFaults = 20;
 
 /// A trace that is not in the exchange format: its first faults in file order (at most
-/// kMaxTraceFaults) and how many more it has. what() is one `path:line:column: error: message`
-/// line per fault, then `path: error: N more errors not shown` when there are more.
-class TraceError : public std::runtime_error {
+/// kMaxTraceFaults) and how many more it has. An input error at the first fault; report() is
+/// one `path:line:column: error: message` line per fault, then `path: error: N more errors not
+/// shown` when there are more.
+class TraceError : public InputError {
  public:
   TraceError(std::string path, std::vector<TraceFault> faults, std::size_t more);
+  std::string report() const;
   std::string path;
   std::vector<TraceFault> faults;  // never empty
   std::size_t more = 0;

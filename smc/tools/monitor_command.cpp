@@ -152,7 +152,7 @@ int run_monitor(const MonitorOptions& options) {
       checked.push_back(
           {path, monitors::check_trace(parsed.file, in, path, scale, diagnostics, reading)});
     } catch (const monitors::TraceError& e) {
-      std::cerr << e.what();
+      std::cerr << e.report();
       return kInputError;
     } catch (const monitors::MonitorError& e) {
       diagnostics.error(e.at, e.what());

@@ -120,10 +120,13 @@ TEST(TraceCheck, HeaderAndRatesFaultsAreLocated) {
 
 TEST(TraceCheck, ErrorTextIsOneLocatedLinePerFault) {
   const TraceError e("t.jsonl", {{2, 9, "the time goes back"}, {3, 1, "expected"}}, 7);
-  EXPECT_STREQ(e.what(),
-               "t.jsonl:2:9: error: the time goes back\n"
-               "t.jsonl:3:1: error: expected\n"
-               "t.jsonl: error: 7 more errors not shown\n");
+  EXPECT_EQ(e.report(),
+            "t.jsonl:2:9: error: the time goes back\n"
+            "t.jsonl:3:1: error: expected\n"
+            "t.jsonl: error: 7 more errors not shown\n");
+  // As an input error of the tools: the first fault, at its place.
+  const InputError& input = e;
+  EXPECT_EQ(input.describe("smcbip"), "t.jsonl:2:9: error: the time goes back");
 }
 
 TEST(TraceCheck, ValueColumnFollowsTheParsedValue) {

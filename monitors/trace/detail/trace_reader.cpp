@@ -8,8 +8,22 @@ namespace smcbip::monitors {
 
 namespace {
 
-std::string fault_lines(const std::string& path, const std::vector<TraceFault>& faults,
-                        std::size_t more) {
+ErrorLocation first_fault(const std::string& path, const std::vector<TraceFault>& faults) {
+  if (faults.empty()) return {path};
+  return {path, static_cast<std::uint32_t>(faults.front().line),
+          static_cast<std::uint32_t>(faults.front().column)};
+}
+
+}  // namespace
+
+TraceError::TraceError(std::string path, std::vector<TraceFault> faults, std::size_t more)
+    : InputError(faults.empty() ? std::string("not a trace") : faults.front().message,
+                 first_fault(path, faults)),
+      path(std::move(path)),
+      faults(std::move(faults)),
+      more(more) {}
+
+std::string TraceError::report() const {
   std::string out;
   for (const TraceFault& f : faults) {
     out += path + ":" + std::to_string(f.line) + ":" + std::to_string(f.column) +
@@ -18,14 +32,6 @@ std::string fault_lines(const std::string& path, const std::vector<TraceFault>& 
   if (more > 0) out += path + ": error: " + std::to_string(more) + " more errors not shown\n";
   return out;
 }
-
-}  // namespace
-
-TraceError::TraceError(std::string path, std::vector<TraceFault> faults, std::size_t more)
-    : std::runtime_error(fault_lines(path, faults, more)),
-      path(std::move(path)),
-      faults(std::move(faults)),
-      more(more) {}
 
 namespace detail {
 
