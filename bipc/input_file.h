@@ -9,8 +9,10 @@
 
 namespace smcbip::bipc {
 
-/// Property files, option files and the like are text a person writes: 16 MiB is plenty.
-inline constexpr std::uint64_t kMaxInputFileBytes = std::uint64_t{16} << 20;
+/// Property files, option files and the like are text a person writes: 4 MiB (some 100,000
+/// queries) is plenty, and bounds the memory a syntax tree of the file takes (about 80 bytes per
+/// byte of a property file: some 330 MB at most).
+inline constexpr std::uint64_t kMaxInputFileBytes = std::uint64_t{4} << 20;
 
 /// The contents of `path`. Throws smcbip::InputError (located at `path`) when it is missing or
 /// unreadable, not a regular file, or larger than `max_bytes`; `what` names the file in the

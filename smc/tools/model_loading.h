@@ -23,7 +23,7 @@ std::optional<bipc::ir::System> load_model_system(const bipc::FrontendOptions& f
                                                   LoadFailure& failure);
 
 /// The queries of the property file `path` with the values of `parameters` (--param). Throws
-/// smcbip::InputError when it is not a regular file or is larger than 16 MiB.
+/// smcbip::InputError when it is not a regular file or is larger than 4 MiB.
 monitors::ParsedProperties load_property_file(const std::string& path,
                                               const std::vector<std::string>& parameters = {});
 
