@@ -223,7 +223,9 @@ class ReferenceEvaluator {
   Tri until(const monitors::Formula* hold, const monitors::Formula& goal,
             const monitors::Bound& bound, Point at, bool negate_goal = false,
             bool negate_hold = false) const {
-    const auto [low2, high2] = window(bound);
+    // Plain copies: lambdas may not capture structured bindings before C++20's P1091 (clang 14).
+    const auto window_ends = window(bound);
+    const auto low2 = window_ends.first, high2 = window_ends.second;
     Tri result = Tri::False;  // OR over the candidate points
     Tri held = Tri::True;     // AND of the hold over the points before the candidate
     Point seen = at;          // the last point visited
