@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bipc/ast/ast.h"
@@ -22,6 +23,10 @@ struct LoadedModel {
 /// Parses one package from text (no `use` resolution); appends syntax errors to `diags`.
 std::unique_ptr<ast::Package> parse_package(const std::string& text, std::uint32_t file,
                                             Diagnostics& diags);
+
+/// Whether `word` is a keyword of BIP2 (`end`, `port`, `data`, ...), which a name written into a
+/// package must not be.
+bool is_keyword(std::string_view word);
 
 /// Parses a root instantiation such as `Syst()` or `pkg.Top(3, true)`.
 std::optional<ast::ComponentDecl> parse_root(const std::string& text, std::uint32_t file,

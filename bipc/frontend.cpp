@@ -1,11 +1,17 @@
 // The whole front end in one call: load, check, pick and check the root, instantiate.
 #include "bipc/bipc.h"
 
+#include "bipc/parse/lexer.h"
+
 namespace smcbip::bipc {
 
 namespace {
 Location file_start(std::uint32_t file) { return Location{file, 1, 1}; }
 }  // namespace
+
+bool is_keyword(std::string_view word) {
+  return detail::keyword_kind(word) != detail::TokenKind::Identifier;
+}
 
 FrontendResult run_frontend(const FrontendOptions& options, bool need_system) {
   FrontendResult result;
