@@ -18,6 +18,10 @@ namespace {
 /// The editor's period for a cyclic interface that names none (spacecreator's default).
 constexpr Milliseconds kDefaultCyclicPeriod = 1000.0;
 
+/// Functions nest at most this deep: the reader recurses once per level, and no design comes
+/// near it (the examples nest three levels).
+constexpr std::size_t kMaxNesting = 200;
+
 /// Maps pugixml's byte offsets to 1-based line:column (columns count bytes).
 class LineIndex {
  public:
@@ -164,8 +168,16 @@ class Reader {
     function.language = node.attribute("language").value();
     if (function.language.empty()) function.language = implementation_language(node);
 
+    const std::size_t depth = parent ? depth_[*parent] + 1 : 0;
+    if (depth >= kMaxNesting) {
+      diags_.error(function.at, "function nested " + std::to_string(depth + 1) +
+                                    " levels deep: expected at most " +
+                                    std::to_string(kMaxNesting));
+      return;
+    }
     const std::size_t index = view.functions.size();
     view.functions.push_back(std::move(function));
+    depth_.push_back(depth);
     // Children are read after the parent's slot exists, so they can name it by index.
     for (const pugi::xml_node& child : node.children()) {
       if (child.type() != pugi::node_element) continue;
@@ -303,6 +315,7 @@ class Reader {
 
   LineIndex lines_;
   bipc::Diagnostics& diags_;
+  std::vector<std::size_t> depth_;  // per function read, its nesting level
 };
 
 }  // namespace

@@ -262,6 +262,16 @@ TEST(FlattenReal, RtemsStress) {
   EXPECT_EQ(diags.all().size(), 0u) << messages(diags);
   EXPECT_EQ(flat.functions.size(), 130u);  // Function_105 gives way to its 16 children
   for (const Function& f : flat.functions) EXPECT_NE(f.name, "Function_105");
+  // 128 top-level connections, 16 of them at Function_105's border, re-routed one to one, plus
+  // the 8 calls between its children.
+  EXPECT_EQ(flat.connections.size(), 136u);
+  const std::vector<std::string> all = calls(flat);
+  for (const char* expected : {"Function_101.PI_4 -> Function_109.PI_1",     // delegated in
+                               "Function_120.RI_1 -> Function_130.PI_1",     // delegated out
+                               "Function_115.RI_1 -> Function_125.PI_1",     // out, renamed RI
+                               "Function_106.PI_1 -> Function_115.PI_1"}) {  // inside
+    EXPECT_TRUE(std::find(all.begin(), all.end(), expected) != all.end()) << expected;
+  }
   for (const Connection& c : flat.connections) {
     EXPECT_NE(c.from.function, "Function_105");
     EXPECT_NE(c.to.function, "Function_105");

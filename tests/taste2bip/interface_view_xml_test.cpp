@@ -289,6 +289,20 @@ TEST(XmlInterfaceView, BinaryGarbageDoesNotCrash) {
   EXPECT_TRUE(diags.has_errors());
 }
 
+TEST(XmlInterfaceView, DeepNestingIsAnErrorNotACrash) {
+  std::string text = "<InterfaceView>\n";
+  for (int i = 0; i < 100000; ++i) text += "<Function name=\"f\">";
+  for (int i = 0; i < 100000; ++i) text += "</Function>";
+  text += "\n</InterfaceView>";
+  bipc::Diagnostics diags;
+  const InterfaceView view = read(text, diags);
+  ASSERT_EQ(diags.error_count(), 1u);
+  EXPECT_EQ(diags.all()[0].location.line, 2u);
+  EXPECT_EQ(diags.all()[0].location.column, 200u * 19u + 1u);
+  EXPECT_EQ(diags.all()[0].message, "function nested 201 levels deep: expected at most 200");
+  EXPECT_EQ(view.functions.size(), 200u);
+}
+
 // ---- The real views of ../shared/data/taste (absent from a user's clone) ----
 
 std::string data_path(const std::string& relative) {
@@ -313,6 +327,24 @@ InterfaceView read_real(const std::string& relative, bool& skipped) {
   bool skipped_ = false;                                    \
   const InterfaceView view = read_real(relative, skipped_); \
   if (skipped_) GTEST_SKIP() << "no ../shared/data/taste next to the source tree"
+
+TEST(XmlInterfaceViewReal, EveryTruncationIsAnErrorNotACrash) {
+  const std::string path = data_path("esa-spacecreator/iv_remote_control/interfaceview.xml");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no ../shared/data/taste";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream whole;
+  whole << in.rdbuf();
+  const std::string text = whole.str();
+  for (std::size_t size = 0; size + 2 < text.size(); size += 7) {
+    bipc::Diagnostics diags;
+    (void)read(text.substr(0, size), diags);
+    EXPECT_TRUE(diags.has_errors()) << "truncated at " << size;
+    for (const bipc::Diagnostic& d : diags.all()) {
+      EXPECT_GE(d.location.line, 1u);
+      EXPECT_GE(d.location.column, 1u);
+    }
+  }
+}
 
 TEST(XmlInterfaceViewReal, FreertosExample) {
   READ_REAL_OR_SKIP(view, "n7space-TASTE-SAMV71-Demo/freertos-example/interfaceview.xml");
