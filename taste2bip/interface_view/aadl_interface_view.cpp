@@ -12,8 +12,8 @@
 namespace smcbip::taste2bip {
 namespace {
 
-using detail::AadlClassifier;
 using detail::aadl_key;
+using detail::AadlClassifier;
 using detail::AadlMember;
 using detail::AadlPackage;
 using detail::AadlReference;
@@ -111,8 +111,7 @@ class Reader {
 
   /// The declaration `ref` names, seen from `from` (an unqualified name is the package's own).
   const Declared* lookup(const std::string& key, const AadlPackage& from) const {
-    const std::string full =
-        key.find("::") == std::string::npos ? from.name.key + "::" + key : key;
+    const std::string full = key.find("::") == std::string::npos ? from.name.key + "::" + key : key;
     const auto found = declared_.find(full);
     return found == declared_.end() ? nullptr : &found->second;
   }
@@ -132,8 +131,8 @@ class Reader {
           lookup(without_implementation(sub.classifier.key), *implementation.package);
       if (type == nullptr || type->classifier->category != "system") {
         errors_.error(sub.classifier.at.line == 0 ? sub.name.at : sub.classifier.at,
-                      "expected the SYSTEM '" + sub.classifier.text +
-                          "' of function " + sub.name.text + " to be declared in this view");
+                      "expected the SYSTEM '" + sub.classifier.text + "' of function " +
+                          sub.name.text + " to be declared in this view");
         continue;
       }
       if (impl != nullptr && !on_stack_.insert(impl->classifier).second) {
@@ -207,8 +206,8 @@ class Reader {
     if (const auto* kind = find(props, "rcmoperationkind")) {
       interface.kind = properties_.kind(*kind).value_or(InterfaceKind::Any);
     } else if (provided) {
-      errors_.error(feature.name.at, "expected Taste::RCMoperationKind on provided interface " +
-                                         feature.name.text);
+      errors_.error(feature.name.at,
+                    "expected Taste::RCMoperationKind on provided interface " + feature.name.text);
     }
     if (const auto* period = find(props, "rcmperiod")) interface.period = properties_.time(*period);
     if (const auto* deadline = find(props, "deadline"))
@@ -217,9 +216,9 @@ class Reader {
       interface.dispatch_offset = properties_.time(*offset);
     if (provided && interface.kind == InterfaceKind::Cyclic && !interface.period) {
       interface.period = kDefaultCyclicPeriod;
-      view_.assumptions.push_back({"cyclic interface " + function + "." + interface.name +
-                                       " has no period: 1000 ms",
-                                   feature.name.at});
+      view_.assumptions.push_back(
+          {"cyclic interface " + function + "." + interface.name + " has no period: 1000 ms",
+           feature.name.at});
     }
     // The subprogram: a PI's classifier is its own; an RI's names the callee's, so its own
     // SUBPROGRAM RI_x is looked up in the function's package (2.x) or interfaceview::FV::<F> (1.3).
@@ -228,9 +227,9 @@ class Reader {
     if (!provided) {
       subprogram = lookup(feature_key, *type.package);
       if (subprogram == nullptr)
-        subprogram = lookup("interfaceview::fv::" + aadl_key(type.classifier->name.text) +
-                                "::" + feature_key,
-                            *type.package);
+        subprogram = lookup(
+            "interfaceview::fv::" + aadl_key(type.classifier->name.text) + "::" + feature_key,
+            *type.package);
     }
     if (subprogram == nullptr && !feature.classifier.key.empty())
       subprogram = lookup(without_implementation(feature.classifier.key), *type.package);
@@ -261,8 +260,8 @@ class Reader {
       } else if (feature.words == "out parameter") {
         parameter.direction = Parameter::Direction::Out;
       } else {
-        errors_.error(feature.name.at, "expected an IN or OUT PARAMETER, got '" +
-                                           feature.words + "'");
+        errors_.error(feature.name.at,
+                      "expected an IN or OUT PARAMETER, got '" + feature.words + "'");
         continue;
       }
       if (parameter.type.empty())
@@ -329,8 +328,8 @@ class Reader {
           function = i;
       }
       if (!function) {
-        errors_.error(ref.at, "expected a function of this level, got '" +
-                                  ref.text.substr(0, dot) + "'");
+        errors_.error(ref.at,
+                      "expected a function of this level, got '" + ref.text.substr(0, dot) + "'");
         return false;
       }
     }

@@ -9,8 +9,9 @@ void AadlErrors::error(bipc::Location at, std::string message) {
   if (exhausted()) return;
   ++count_;
   if (exhausted()) {
-    diags_.error(at, "too many errors (" + std::to_string(kMaxErrors) + "); the rest of the file "
-                                                                         "is not read");
+    diags_.error(at, "too many errors (" + std::to_string(kMaxErrors) +
+                         "); the rest of the file "
+                         "is not read");
     return;
   }
   diags_.error(at, std::move(message));
@@ -45,7 +46,8 @@ class Lexer {
         tokens.push_back({AadlTokenKind::Number, take_number(), at});
       } else if (c == '"') {
         std::string text;
-        if (take_string(text)) tokens.push_back({AadlTokenKind::String, std::move(text), at});
+        take_string(text);  // an unterminated string is reported and kept as it stands
+        tokens.push_back({AadlTokenKind::String, std::move(text), at});
       } else if (!take_symbol(tokens, at)) {
         // A run of unexpected bytes (1 MB of NULs) is one error.
         advance();  // always: a lone '=' or '<' must not stall the lexer
@@ -107,8 +109,8 @@ class Lexer {
 
   std::string take_while_word() {
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && (is_letter(text_[pos_]) || is_digit(text_[pos_]) ||
-                                   text_[pos_] == '_'))
+    while (pos_ < text_.size() &&
+           (is_letter(text_[pos_]) || is_digit(text_[pos_]) || text_[pos_] == '_'))
       advance();
     return std::string(text_.substr(start, pos_ - start));
   }
@@ -133,7 +135,7 @@ class Lexer {
     return std::string(text_.substr(start, pos_ - start));
   }
 
-  bool take_string(std::string& out) {
+  void take_string(std::string& out) {
     const bipc::Location at = here();
     advance();
     while (pos_ < text_.size()) {
@@ -141,13 +143,12 @@ class Lexer {
       if (c == '\n') break;
       advance();
       if (c == '"') {
-        if (peek(0) != '"') return true;
+        if (peek(0) != '"') return;
         advance();  // "" is a quote inside the string
       }
       out += c;
     }
     errors_.error(at, "unterminated string: expected '\"' before the end of the line");
-    return false;
   }
 
   bool take_symbol(std::vector<AadlToken>& tokens, bipc::Location at) {

@@ -14,12 +14,12 @@ using Kind = AadlTokenKind;
 constexpr int kMaxValueNesting = 32;
 
 const std::set<std::string, std::less<>> kCategories = {
-    "abstract", "bus",    "data",       "device", "memory", "process", "processor",
-    "subprogram", "system", "thread", "virtual", "group"};
+    "abstract",  "bus",        "data",   "device", "memory",  "process",
+    "processor", "subprogram", "system", "thread", "virtual", "group"};
 
-const std::set<std::string, std::less<>> kSections = {
-    "features", "subcomponents", "connections", "properties", "flows", "modes", "calls",
-    "prototypes", "end"};
+const std::set<std::string, std::less<>> kSections = {"features",   "subcomponents", "connections",
+                                                      "properties", "flows",         "modes",
+                                                      "calls",      "prototypes",    "end"};
 
 class Parser {
  public:
@@ -137,8 +137,8 @@ class Parser {
         take();
         AadlReference closing;
         if (reference(closing, false) && closing.key != result.name.key)
-          errors_.error(closing.at, "expected 'END " + result.name.text + ";', got 'END " +
-                                        closing.text + "'");
+          errors_.error(closing.at,
+                        "expected 'END " + result.name.text + ";', got 'END " + closing.text + "'");
         if (closing.key.empty() || !expect(Kind::Semicolon, "';'")) recover();
         return result;
       }
@@ -170,8 +170,10 @@ class Parser {
   AadlClassifier classifier() {
     AadlClassifier result;
     result.category = aadl_key(take().text);
-    if (result.category == "subprogram" && is_word("group")) result.category += " " + aadl_key(take().text);
-    if (result.category == "virtual" && is(Kind::Identifier)) result.category += " " + aadl_key(take().text);
+    if (result.category == "subprogram" && is_word("group"))
+      result.category += " " + aadl_key(take().text);
+    if (result.category == "virtual" && is(Kind::Identifier))
+      result.category += " " + aadl_key(take().text);
     if (is_word("implementation")) {
       take();
       result.implementation = true;
@@ -225,8 +227,8 @@ class Parser {
         take();
         AadlReference closing;
         if (reference(closing, true) && closing.key != aadl_key(result.name.text))
-          errors_.error(closing.at, "expected 'END " + result.name.text + ";', got 'END " +
-                                        closing.text + "'");
+          errors_.error(closing.at,
+                        "expected 'END " + result.name.text + ";', got 'END " + closing.text + "'");
         if (closing.key.empty() || !expect(Kind::Semicolon, "';'")) recover();
         return result;
       } else {
@@ -238,7 +240,9 @@ class Parser {
     return result;
   }
 
-  bool at_section() const { return is(Kind::Identifier) && kSections.count(aadl_key(token().text)) > 0; }
+  bool at_section() const {
+    return is(Kind::Identifier) && kSections.count(aadl_key(token().text)) > 0;
+  }
 
   /// Members up to the next section keyword: `name : words [reference] [{props}];`, a connection
   /// with `end -> end` after its words; `none;` is an empty list.
@@ -270,10 +274,9 @@ class Parser {
 
   static bool is_category_word(const std::string& key) {
     static const std::set<std::string, std::less<>> kWords = {
-        "in",     "out",  "parameter", "provides", "requires", "subprogram", "access",
-        "data",   "event", "port",     "feature",  "group",    "bus",        "system",
-        "thread", "process", "device", "memory",   "processor", "abstract",  "virtual",
-        "refined", "to"};
+        "in",     "out",    "parameter", "provides", "requires", "subprogram", "access", "data",
+        "event",  "port",   "feature",   "group",    "bus",      "system",     "thread", "process",
+        "device", "memory", "processor", "abstract", "virtual",  "refined",    "to"};
     return kWords.count(key) > 0;
   }
 
@@ -332,6 +335,8 @@ class Parser {
     while (true) {
       if (at_end()) return expected("';' after the value of " + result.name);
       if (open.empty() && is(Kind::Semicolon)) break;
+      // `end` is reserved: a value never holds it, so a missing ';' is reported where it was due.
+      if (is_word("end")) return expected("';' after the value of " + result.name);
       if (is(Kind::LeftParen) || is(Kind::LeftBracket)) {
         if (open.size() >= kMaxValueNesting)
           return expected("at most " + std::to_string(kMaxValueNesting) +
@@ -339,12 +344,14 @@ class Parser {
         open.push_back(is(Kind::LeftParen) ? Kind::RightParen : Kind::RightBracket);
       } else if (is(Kind::RightParen) || is(Kind::RightBracket)) {
         if (open.empty() || open.back() != token().kind)
-          return expected(open.empty() ? std::string("';'")
-                                       : std::string(open.back() == Kind::RightParen ? "')'" : "']'"));
+          return expected(open.empty()
+                              ? std::string("';'")
+                              : std::string(open.back() == Kind::RightParen ? "')'" : "']'"));
         open.pop_back();
       } else if (is(Kind::LeftBrace) || is(Kind::RightBrace)) {
-        return expected(open.empty() ? "';' after the value of " + result.name
-                                     : std::string(open.back() == Kind::RightParen ? "')'" : "']'"));
+        return expected(open.empty()
+                            ? "';' after the value of " + result.name
+                            : std::string(open.back() == Kind::RightParen ? "')'" : "']'"));
       }
       result.value.push_back(take());
     }

@@ -1,9 +1,9 @@
 // Values of the AADL property associations the interface view keeps.
+#include "taste2bip/interface_view/detail/aadl_properties.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-
-#include "taste2bip/interface_view/detail/aadl_properties.h"
 
 namespace smcbip::taste2bip::detail {
 namespace {
@@ -80,7 +80,8 @@ std::optional<std::uint32_t> AadlPropertyValues::count(const AadlProperty& p) {
   std::uint32_t value = 0;
   const std::string digits = without_underscores(t.text);
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (t.kind != AadlTokenKind::Number || ec != std::errc() || end != digits.data() + digits.size()) {
+  if (t.kind != AadlTokenKind::Number || ec != std::errc() ||
+      end != digits.data() + digits.size()) {
     expected(p, 0, "a non-negative integer below 2^32");
     return std::nullopt;
   }

@@ -84,7 +84,7 @@ struct AadlProperty {
 /// the category keywords (`in parameter`, `provides subprogram access`, `system`, ...).
 struct AadlMember {
   AadlToken name;
-  std::string words;  // the keywords lowercased and joined by single spaces
+  std::string words;         // the keywords lowercased and joined by single spaces
   AadlReference classifier;  // empty text when none
   // Connections only: the two ends, each `component.feature` or `feature`.
   AadlReference source, destination;
