@@ -327,6 +327,38 @@ TEST(AadlInterfaceViewErrors, LocatedWithWhatWasExpected) {
             "view");
 }
 
+TEST(AadlInterfaceViewErrors, InterfaceFactsOfTheWrongForm) {
+  const std::string no_kind =
+      view_of(function_package("F", "", provided("go", "")), "SUBCOMPONENTS\n" + subcomponent("F"));
+  EXPECT_EQ(only_error(no_kind),
+            "6:3: expected Taste::RCMoperationKind on provided interface PI_go");
+
+  const std::string range = view_of(
+      function_package("F",
+                       "SUBPROGRAM PI_go\nEND PI_go;\nSUBPROGRAM IMPLEMENTATION PI_go.others\n"
+                       "PROPERTIES\n  Compute_Execution_Time => 0 ms 10 ms;\nEND PI_go.others;\n",
+                       provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
+      "SUBCOMPONENTS\n" + subcomponent("F"));
+  EXPECT_EQ(only_error(range),
+            "8:34: expected '..' and the upper bound in Compute_Execution_Time, got '10'");
+
+  const std::string in_out = view_of(
+      function_package(
+          "F", "SUBPROGRAM PI_go\nFEATURES\n  v : IN OUT PARAMETER DataView::T;\nEND PI_go;\n",
+          provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
+      "SUBCOMPONENTS\n" + subcomponent("F"));
+  EXPECT_EQ(only_error(in_out), "6:3: expected an IN or OUT PARAMETER, got 'in out parameter'");
+
+  const std::string queue = view_of(
+      function_package(
+          "F", "SUBPROGRAM PI_go\nPROPERTIES\n  Taste::Associated_Queue_Size => -1;\nEND PI_go;\n",
+          provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
+      "SUBCOMPONENTS\n" + subcomponent("F"));
+  EXPECT_EQ(only_error(queue),
+            "6:35: expected a non-negative integer below 2^32 in Taste::Associated_Queue_Size, got "
+            "'-'");
+}
+
 TEST(AadlInterfaceViewErrors, UnknownInterfaceOfAConnectedFunction) {
   const Read r = read(view_of(
       function_package("F", "", provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
