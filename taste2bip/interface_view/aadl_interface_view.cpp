@@ -135,6 +135,11 @@ class Reader {
                           sub.name.text + " to be declared in this view");
         continue;
       }
+      if (has_function(scope, aadl_key(sub.name.text))) {
+        errors_.error(sub.name.at, "expected one function " + sub.name.text +
+                                       " at this level, got a second one");
+        continue;
+      }
       if (impl != nullptr && !on_stack_.insert(impl->classifier).second) {
         errors_.error(sub.classifier.at, "function " + sub.name.text + " contains itself");
         continue;
@@ -145,6 +150,13 @@ class Reader {
         on_stack_.erase(impl->classifier);
       }
     }
+  }
+
+  bool has_function(std::optional<std::size_t> scope, const std::string& key) const {
+    for (const Function& f : view_.functions) {
+      if (f.parent == scope && aadl_key(f.name) == key) return true;
+    }
+    return false;
   }
 
   std::size_t read_function(const AadlMember& sub, const Declared& type, const Declared* impl,
@@ -306,6 +318,20 @@ class Reader {
       if (!endpoint(member.destination, pending.scope, connection.from) ||
           !endpoint(member.source, pending.scope, connection.to))
         continue;
+      // Between two functions of one level the provider comes first; a delegation joins a
+      // parent's interface to a child's of the same side.
+      const bool siblings = member.source.text.find('.') != std::string::npos &&
+                            member.destination.text.find('.') != std::string::npos;
+      if (siblings && (!connection.to.provided || connection.from.provided)) {
+        errors_.error(member.source.at,
+                      "expected a provided interface before '->' and a required one after it, "
+                      "got " +
+                          std::string(connection.to.provided ? "provided" : "required") + " '" +
+                          member.source.text + "' -> " +
+                          (connection.from.provided ? "provided" : "required") + " '" +
+                          member.destination.text + "'");
+        continue;
+      }
       view_.connections.push_back(std::move(connection));
     }
   }

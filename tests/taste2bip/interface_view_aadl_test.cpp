@@ -359,6 +359,21 @@ TEST(AadlInterfaceViewErrors, InterfaceFactsOfTheWrongForm) {
             "'-'");
 }
 
+TEST(AadlInterfaceViewErrors, ConnectionBackwardsAndFunctionTwice) {
+  const std::string backwards = view_of(
+      function_package(
+          "A", "", "  RI_go : REQUIRES SUBPROGRAM ACCESS { Taste::RCMoperationKind => any; };\n") +
+          function_package("F", "", provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
+      "SUBCOMPONENTS\n" + subcomponent("A") + subcomponent("F") +
+          "CONNECTIONS\n  c : SUBPROGRAM ACCESS A.RI_go -> F.PI_go;\n");
+  EXPECT_EQ(only_error(backwards),
+            "37:25: expected a provided interface before '->' and a required one after it, got "
+            "required 'A.RI_go' -> provided 'F.PI_go'");
+  const std::string twice = view_of(function_package("F", "", ""),
+                                    "SUBCOMPONENTS\n" + subcomponent("F") + subcomponent("f"));
+  EXPECT_EQ(only_error(twice), "19:3: expected one function f at this level, got a second one");
+}
+
 TEST(AadlInterfaceViewErrors, UnknownInterfaceOfAConnectedFunction) {
   const Read r = read(view_of(
       function_package("F", "", provided("go", "    Taste::RCMoperationKind => sporadic;\n")),
