@@ -18,7 +18,6 @@ class AadlErrors {
   static constexpr std::size_t kMaxErrors = 20;
   explicit AadlErrors(bipc::Diagnostics& diags) : diags_(diags) {}
   void error(bipc::Location at, std::string message);
-  void warning(bipc::Location at, std::string message) { diags_.warning(at, std::move(message)); }
   /// True once the cap is reached: readers stop as soon as they see it.
   bool exhausted() const { return count_ >= kMaxErrors; }
   std::size_t count() const { return count_; }
