@@ -29,7 +29,9 @@ using Milliseconds = double;
 struct Parameter {
   enum class Direction : std::uint8_t { In, Out } direction = Direction::In;
   std::string name;
-  std::string type;  // the ASN.1 type as the view names it (`Base-commands-Motion2D`)
+  /// The ASN.1 type as the view spells it: the XML view writes the ASN.1 name
+  /// (`Base-commands-Motion2D`), the AADL view DataView.aadl's (`Base_commands_Motion2D`).
+  std::string type;
   bipc::Location at;
 };
 
