@@ -1,0 +1,263 @@
+// Resolution of a data view: names to assignments, IMPORTS checked, self-defined types found,
+// and every type mapped to BIP data.
+#include <charconv>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+#include "taste2bip/asn1/data_view.h"
+#include "taste2bip/asn1/lookup.h"
+
+namespace smcbip::taste2bip::asn1 {
+namespace {
+
+using detail::find_type_from;
+using detail::find_value_from;
+using detail::module_index;
+
+constexpr int kMaxValueHops = 32;
+
+std::string line_of(const bipc::Location& at) { return "line " + std::to_string(at.line); }
+
+/// A reference of one assignment to another that needs no indirection to be finite.
+struct Edge {
+  std::size_t to = 0;  // global index of the assignment
+  bipc::Location at;
+};
+
+class Resolver {
+ public:
+  Resolver(DataView& view, bipc::Diagnostics& diags) : view_(view), diags_(diags) {
+    for (const Module& m : view_.modules) {
+      first_.push_back(count_);
+      count_ += m.types.size();
+    }
+  }
+
+  void run() {
+    check_names();
+    for (std::size_t m = 0; m < view_.modules.size(); ++m) {
+      check_imports(m);
+      Module& module = view_.modules[m];
+      for (TypeAssignment& a : module.types) resolve_type(a.type, m, a.parameters);
+      for (ValueAssignment& v : module.values) resolve_type(v.type, m, {});
+    }
+    find_cycles();
+    for (Module& module : view_.modules) {
+      for (TypeAssignment& a : module.types) set_bip(a.type);
+      for (ValueAssignment& v : module.values) set_bip(v.type);
+    }
+  }
+
+ private:
+  void check_names() {
+    std::map<std::string, bipc::Location> modules;
+    for (const Module& m : view_.modules) {
+      auto [it, fresh] = modules.emplace(m.name, m.at);
+      if (!fresh) {
+        diags_.error(m.at, "the module '" + m.name + "' is already defined (" +
+                               line_of(it->second) + " of its file)");
+      }
+      std::map<std::string, bipc::Location> names;
+      for (const TypeAssignment& a : m.types) {
+        auto [at, fresh_name] = names.emplace(a.name, a.at);
+        if (!fresh_name) {
+          diags_.error(a.at, "the type '" + a.name + "' is already defined in module '" + m.name +
+                                 "' (" + line_of(at->second) + ")");
+        }
+      }
+      for (const ValueAssignment& v : m.values) {
+        auto [at, fresh_name] = names.emplace(v.name, v.at);
+        if (!fresh_name) {
+          diags_.error(v.at, "the value '" + v.name + "' is already defined in module '" + m.name +
+                                 "' (" + line_of(at->second) + ")");
+        }
+      }
+    }
+  }
+
+  void check_imports(std::size_t m) {
+    for (const Import& import : view_.modules[m].imports) {
+      auto from = module_index(view_, import.module);
+      if (!from) {
+        diags_.error(import.at, "unknown module '" + import.module + "' in IMPORTS");
+        continue;
+      }
+      for (std::size_t i = 0; i < import.names.size(); ++i) {
+        const std::string& name = import.names[i];
+        if (!find_type_from(view_, *from, name) && !find_value_from(view_, *from, name)) {
+          diags_.error(import.name_at[i], "module '" + import.module + "' has no type or value '" +
+                                              name + "' to import");
+        }
+      }
+    }
+  }
+
+  /// Whether module m imports `name` (an unresolved import is reported at the import).
+  bool imported(std::size_t m, const std::string& name) const {
+    for (const Import& import : view_.modules[m].imports) {
+      for (const std::string& n : import.names) {
+        if (n == name) return true;
+      }
+    }
+    return false;
+  }
+
+  void resolve_type(Type& t, std::size_t m, const std::vector<Parameter>& params) {
+    for (Range& r : t.range.ranges) {
+      resolve_value(r.lower, m, params);
+      resolve_value(r.upper, m, params);
+    }
+    for (Range& r : t.size.ranges) {
+      resolve_value(r.lower, m, params);
+      resolve_value(r.upper, m, params);
+    }
+    if (t.kind == TypeKind::Reference) resolve_reference(t, m, params);
+    for (Component& c : t.components) resolve_type(c.type, m, params);
+    if (t.element) resolve_type(*t.element, m, params);
+  }
+
+  void resolve_reference(Type& t, std::size_t m, const std::vector<Parameter>& params) {
+    std::string shown = t.module.empty() ? t.name : t.module + "." + t.name;
+    if (!t.module.empty()) {
+      auto index = module_index(view_, t.module);
+      if (!index) {
+        diags_.error(t.at, "unknown module '" + t.module + "' in '" + shown + "'");
+        return;
+      }
+      t.target = find_type_from(view_, *index, t.name);
+    } else {
+      t.target = find_type_from(view_, m, t.name);
+    }
+    if (!t.target) {
+      if (t.module.empty() && imported(m, t.name)) return;
+      diags_.error(t.at, "unknown type '" + shown + "'");
+      return;
+    }
+    for (Value& v : t.arguments) resolve_value(v, m, params);
+    const TypeAssignment* target = view_.type(*t.target);
+    if (target->parameters.size() != t.arguments.size()) {
+      diags_.error(t.at, "'" + shown + "' takes " + std::to_string(target->parameters.size()) +
+                             " argument(s), but " + std::to_string(t.arguments.size()) +
+                             " are given");
+    }
+  }
+
+  void resolve_value(Value& v, std::size_t m, const std::vector<Parameter>& params) {
+    if (v.kind != Value::Kind::Name) return;
+    for (const Parameter& p : params) {
+      if (p.name == v.text) {
+        v.is_parameter = true;
+        v.resolved = true;
+        return;
+      }
+    }
+    auto id = find_value_from(view_, m, v.text);
+    if (!id) {
+      if (!imported(m, v.text)) diags_.error(v.at, "unknown value '" + v.text + "'");
+      return;
+    }
+    // A value may name another value: follow the names to a number.
+    for (int hop = 0; hop < kMaxValueHops && id; ++hop) {
+      const std::string& text = view_.modules[id->module].values[id->index].value;
+      if (parse_number(text, v)) {
+        v.resolved = true;
+        return;
+      }
+      id = find_value_from(view_, id->module, text);
+    }
+    diags_.error(v.at, "the value '" + v.text + "' is not a number");
+  }
+
+  static bool parse_number(const std::string& text, Value& v) {
+    std::int64_t integer = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), integer);
+    if (ec == std::errc() && end == text.data() + text.size()) {
+      v.integer = integer;
+      v.real = static_cast<double>(integer);
+      return true;
+    }
+    if (text.empty() || !(text[0] == '-' || (text[0] >= '0' && text[0] <= '9'))) return false;
+    char* real_end = nullptr;
+    double real = std::strtod(text.c_str(), &real_end);
+    if (real_end != text.c_str() + text.size()) return false;
+    v.real = real;
+    return true;
+  }
+
+  // --- cycles: A ::= B, B ::= A, or A ::= SEQUENCE { a A } -----------------------------------
+  void collect_edges(const Type& t, std::vector<Edge>& edges) const {
+    if (t.kind == TypeKind::Reference && t.target) {
+      edges.push_back(Edge{first_[t.target->module] + t.target->index, t.at});
+    }
+    // A CHOICE, a SEQUENCE OF and an OPTIONAL component make finite values possible.
+    if (t.kind == TypeKind::Sequence) {
+      for (const Component& c : t.components) {
+        if (!c.optional) collect_edges(c.type, edges);
+      }
+    }
+  }
+
+  void find_cycles() {
+    std::vector<std::vector<Edge>> edges(count_);
+    std::vector<const TypeAssignment*> node(count_);
+    for (std::size_t m = 0; m < view_.modules.size(); ++m) {
+      for (std::size_t i = 0; i < view_.modules[m].types.size(); ++i) {
+        node[first_[m] + i] = &view_.modules[m].types[i];
+        collect_edges(view_.modules[m].types[i].type, edges[first_[m] + i]);
+      }
+    }
+    enum class Color : std::uint8_t { White, Grey, Black };
+    std::vector<Color> color(count_, Color::White);
+    struct Frame {
+      std::size_t node;
+      std::size_t next_edge;
+    };
+    // Iterative depth-first search: a long chain of references must not exhaust the stack.
+    for (std::size_t root = 0; root < count_; ++root) {
+      if (color[root] != Color::White) continue;
+      std::vector<Frame> stack{{root, 0}};
+      color[root] = Color::Grey;
+      while (!stack.empty()) {
+        Frame& top = stack.back();
+        if (top.next_edge == edges[top.node].size()) {
+          color[top.node] = Color::Black;
+          stack.pop_back();
+          continue;
+        }
+        const Edge& e = edges[top.node][top.next_edge++];
+        if (color[e.to] == Color::White) {
+          color[e.to] = Color::Grey;
+          stack.push_back({e.to, 0});
+        } else if (color[e.to] == Color::Grey) {
+          std::string path;
+          bool on = false;
+          for (const Frame& f : stack) {
+            on = on || f.node == e.to;
+            if (on) path += node[f.node]->name + " -> ";
+          }
+          path += node[e.to]->name;
+          diags_.error(e.at, "the type '" + node[e.to]->name + "' is defined in terms of itself (" +
+                                 path + ") without SEQUENCE OF, CHOICE or OPTIONAL between");
+        }
+      }
+    }
+  }
+
+  void set_bip(Type& t) {
+    t.bip = bip_data(view_, t);
+    for (Component& c : t.components) set_bip(c.type);
+    if (t.element) set_bip(*t.element);
+  }
+
+  DataView& view_;
+  bipc::Diagnostics& diags_;
+  std::vector<std::size_t> first_;  // global index of each module's first type assignment
+  std::size_t count_ = 0;
+};
+
+}  // namespace
+
+void resolve(DataView& view, bipc::Diagnostics& diags) { Resolver(view, diags).run(); }
+
+}  // namespace smcbip::taste2bip::asn1
