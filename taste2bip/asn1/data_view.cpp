@@ -1,8 +1,6 @@
 // Lookups in a data view: modules, and type and value names as a module sees them (IMPORTS).
 #include "taste2bip/asn1/data_view.h"
 
-#include <algorithm>
-
 #include "taste2bip/asn1/lookup.h"
 
 namespace smcbip::taste2bip::asn1 {
@@ -11,71 +9,92 @@ namespace detail {
 // Chains of IMPORTS longer than this are taken to loop (M imports x from N, N from M).
 constexpr int kMaxImportHops = 32;
 
-std::optional<std::size_t> module_index(const DataView& view, std::string_view name) {
-  for (std::size_t i = 0; i < view.modules.size(); ++i) {
-    if (view.modules[i].name == name) return i;
+Lookup::Lookup(const DataView& view) : view_(view) {
+  for (std::size_t m = 0; m < view.modules.size(); ++m) {
+    const Module& module = view.modules[m];
+    modules_.emplace(module.name, m);
+    Names& types = types_.emplace_back();
+    for (std::size_t i = 0; i < module.types.size(); ++i) types.emplace(module.types[i].name, i);
+    Names& values = values_.emplace_back();
+    for (std::size_t i = 0; i < module.values.size(); ++i) {
+      values.emplace(module.values[i].name, i);
+    }
+    imports_.emplace_back();
+  }
+  for (std::size_t m = 0; m < view.modules.size(); ++m) {
+    for (const Import& import : view.modules[m].imports) {
+      auto from = module(import.module);
+      if (!from) continue;
+      for (const std::string& name : import.names) imports_[m].emplace(name, *from);
+    }
+  }
+}
+
+std::optional<std::size_t> Lookup::module(std::string_view name) const {
+  auto it = modules_.find(name);
+  if (it == modules_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<std::size_t> Lookup::imported_from(std::size_t module, std::string_view name) const {
+  auto it = imports_[module].find(name);
+  if (it == imports_[module].end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<TypeId> Lookup::type(std::size_t module, std::string_view name) const {
+  for (int hops = 0; hops < kMaxImportHops; ++hops) {
+    auto it = types_[module].find(name);
+    if (it != types_[module].end()) return TypeId{module, it->second};
+    auto from = imported_from(module, name);
+    if (!from) return std::nullopt;
+    module = *from;
   }
   return std::nullopt;
 }
 
-namespace {
-
-template <typename Own>
-auto follow_imports(const DataView& view, std::size_t module, std::string_view name, Own own)
-    -> decltype(own(module, name)) {
+std::optional<ValueId> Lookup::value(std::size_t module, std::string_view name) const {
   for (int hops = 0; hops < kMaxImportHops; ++hops) {
-    if (auto found = own(module, name)) return found;
-    std::optional<std::size_t> from;
-    for (const Import& import : view.modules[module].imports) {
-      if (std::find(import.names.begin(), import.names.end(), name) != import.names.end()) {
-        from = module_index(view, import.module);
-        break;
-      }
-    }
-    if (!from) return {};
+    auto it = values_[module].find(name);
+    if (it != values_[module].end()) return ValueId{module, it->second};
+    auto from = imported_from(module, name);
+    if (!from) return std::nullopt;
     module = *from;
   }
-  return {};
+  return std::nullopt;
 }
 
-}  // namespace
-
-std::optional<TypeId> find_type_from(const DataView& view, std::size_t module,
-                                     std::string_view name) {
-  return follow_imports(view, module, name,
-                        [&](std::size_t m, std::string_view n) -> std::optional<TypeId> {
-                          const auto& types = view.modules[m].types;
-                          for (std::size_t i = 0; i < types.size(); ++i) {
-                            if (types[i].name == n) return TypeId{m, i};
-                          }
-                          return std::nullopt;
-                        });
-}
-
-std::optional<ValueId> find_value_from(const DataView& view, std::size_t module,
-                                       std::string_view name) {
-  return follow_imports(view, module, name,
-                        [&](std::size_t m, std::string_view n) -> std::optional<ValueId> {
-                          const auto& values = view.modules[m].values;
-                          for (std::size_t i = 0; i < values.size(); ++i) {
-                            if (values[i].name == n) return ValueId{m, i};
-                          }
-                          return std::nullopt;
-                        });
+BipData bip_of_kind(TypeKind kind) {
+  switch (kind) {
+    case TypeKind::Integer:
+    case TypeKind::Enumerated:
+      return BipData::Int;
+    case TypeKind::Boolean:
+      return BipData::Bool;
+    case TypeKind::Real:
+      return BipData::Float;
+    case TypeKind::Reference:
+      return BipData::Unknown;
+    default:
+      return BipData::Extern;
+  }
 }
 
 }  // namespace detail
 
 const Module* DataView::module(std::string_view name) const {
-  auto index = detail::module_index(*this, name);
-  return index ? &modules[*index] : nullptr;
+  for (const Module& m : modules) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
 }
 
 std::optional<TypeId> DataView::find_type(std::string_view name, std::string_view in_module) const {
   if (!in_module.empty()) {
-    auto index = detail::module_index(*this, in_module);
+    detail::Lookup lookup(*this);
+    auto index = lookup.module(in_module);
     if (!index) return std::nullopt;
-    return detail::find_type_from(*this, *index, name);
+    return lookup.type(*index, name);
   }
   for (std::size_t m = 0; m < modules.size(); ++m) {
     for (std::size_t i = 0; i < modules[m].types.size(); ++i) {
@@ -92,15 +111,12 @@ const TypeAssignment* DataView::type(TypeId id) const {
 
 const ValueAssignment* DataView::find_value(std::string_view name,
                                             std::string_view in_module) const {
+  detail::Lookup lookup(*this);
   std::optional<detail::ValueId> id;
   if (!in_module.empty()) {
-    if (auto index = detail::module_index(*this, in_module)) {
-      id = detail::find_value_from(*this, *index, name);
-    }
+    if (auto index = lookup.module(in_module)) id = lookup.value(*index, name);
   } else {
-    for (std::size_t m = 0; m < modules.size() && !id; ++m) {
-      id = detail::find_value_from(*this, m, name);
-    }
+    for (std::size_t m = 0; m < modules.size() && !id; ++m) id = lookup.value(m, name);
   }
   return id ? &modules[id->module].values[id->index] : nullptr;
 }
@@ -110,26 +126,12 @@ BipData bip_data(const DataView& view, const Type& type) {
   // A chain of references is at most as long as the number of assignments (or it loops).
   std::size_t hops = 0;
   for (const Module& m : view.modules) hops += m.types.size();
-  for (std::size_t i = 0; i <= hops; ++i) {
-    switch (t->kind) {
-      case TypeKind::Integer:
-      case TypeKind::Enumerated:
-        return BipData::Int;
-      case TypeKind::Boolean:
-        return BipData::Bool;
-      case TypeKind::Real:
-        return BipData::Float;
-      case TypeKind::Reference: {
-        const TypeAssignment* target = t->target ? view.type(*t->target) : nullptr;
-        if (target == nullptr) return BipData::Unknown;
-        t = &target->type;
-        break;
-      }
-      default:
-        return BipData::Extern;
-    }
+  for (std::size_t i = 0; i <= hops && t->kind == TypeKind::Reference; ++i) {
+    const TypeAssignment* target = t->target ? view.type(*t->target) : nullptr;
+    if (target == nullptr) return BipData::Unknown;
+    t = &target->type;
   }
-  return BipData::Unknown;
+  return detail::bip_of_kind(t->kind);
 }
 
 }  // namespace smcbip::taste2bip::asn1

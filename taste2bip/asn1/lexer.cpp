@@ -156,9 +156,13 @@ class Lexer {
       } else if (c == '-' && peek(1) == '-') {
         advance();
         advance();
-        // X.680 12.6.3: a comment ends at the end of the line or at the next "--".
+        // X.680 12.6.3: a comment ends at the end of the line or at the next "--". But a comment
+        // whose text starts with "--" is a commented-out comment line (`--  -- note`, as in
+        // TASTE's own DataView template) and runs to the end of the line.
+        while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) advance();
+        bool to_end_of_line = peek() == '-' && peek(1) == '-';
         while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') {
-          if (text_[pos_] == '-' && peek(1) == '-') {
+          if (!to_end_of_line && text_[pos_] == '-' && peek(1) == '-') {
             advance();
             advance();
             break;

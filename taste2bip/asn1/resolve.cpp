@@ -1,5 +1,6 @@
 // Resolution of a data view: names to assignments, IMPORTS checked, self-defined types found,
 // and every type mapped to BIP data.
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <map>
@@ -10,10 +11,6 @@
 
 namespace smcbip::taste2bip::asn1 {
 namespace {
-
-using detail::find_type_from;
-using detail::find_value_from;
-using detail::module_index;
 
 constexpr int kMaxValueHops = 32;
 
@@ -27,7 +24,7 @@ struct Edge {
 
 class Resolver {
  public:
-  Resolver(DataView& view, bipc::Diagnostics& diags) : view_(view), diags_(diags) {
+  Resolver(DataView& view, bipc::Diagnostics& diags) : view_(view), diags_(diags), lookup_(view) {
     for (const Module& m : view_.modules) {
       first_.push_back(count_);
       count_ += m.types.size();
@@ -43,6 +40,7 @@ class Resolver {
       for (ValueAssignment& v : module.values) resolve_type(v.type, m, {});
     }
     find_cycles();
+    map_assignments();
     for (Module& module : view_.modules) {
       for (TypeAssignment& a : module.types) set_bip(a.type);
       for (ValueAssignment& v : module.values) set_bip(v.type);
@@ -78,14 +76,14 @@ class Resolver {
 
   void check_imports(std::size_t m) {
     for (const Import& import : view_.modules[m].imports) {
-      auto from = module_index(view_, import.module);
+      auto from = lookup_.module(import.module);
       if (!from) {
         diags_.error(import.at, "unknown module '" + import.module + "' in IMPORTS");
         continue;
       }
       for (std::size_t i = 0; i < import.names.size(); ++i) {
         const std::string& name = import.names[i];
-        if (!find_type_from(view_, *from, name) && !find_value_from(view_, *from, name)) {
+        if (!lookup_.type(*from, name) && !lookup_.value(*from, name)) {
           diags_.error(import.name_at[i], "module '" + import.module + "' has no type or value '" +
                                               name + "' to import");
         }
@@ -120,14 +118,14 @@ class Resolver {
   void resolve_reference(Type& t, std::size_t m, const std::vector<Parameter>& params) {
     std::string shown = t.module.empty() ? t.name : t.module + "." + t.name;
     if (!t.module.empty()) {
-      auto index = module_index(view_, t.module);
+      auto index = lookup_.module(t.module);
       if (!index) {
         diags_.error(t.at, "unknown module '" + t.module + "' in '" + shown + "'");
         return;
       }
-      t.target = find_type_from(view_, *index, t.name);
+      t.target = lookup_.type(*index, t.name);
     } else {
-      t.target = find_type_from(view_, m, t.name);
+      t.target = lookup_.type(m, t.name);
     }
     if (!t.target) {
       if (t.module.empty() && imported(m, t.name)) return;
@@ -152,7 +150,7 @@ class Resolver {
         return;
       }
     }
-    auto id = find_value_from(view_, m, v.text);
+    auto id = lookup_.value(m, v.text);
     if (!id) {
       if (!imported(m, v.text)) diags_.error(v.at, "unknown value '" + v.text + "'");
       return;
@@ -164,7 +162,7 @@ class Resolver {
         v.resolved = true;
         return;
       }
-      id = find_value_from(view_, id->module, text);
+      id = lookup_.value(id->module, text);
     }
     diags_.error(v.at, "the value '" + v.text + "' is not a number");
   }
@@ -244,8 +242,49 @@ class Resolver {
     }
   }
 
+  /// The BIP data of every assignment: a chain of references is followed once, and every
+  /// assignment on it gets the answer (linear in the number of assignments).
+  void map_assignments() {
+    assignment_bip_.assign(count_, BipData::Unknown);
+    std::vector<bool> done(count_, false);
+    for (std::size_t start = 0; start < count_; ++start) {
+      std::vector<std::size_t> chain;
+      std::size_t g = start;
+      BipData result = BipData::Unknown;
+      while (true) {
+        if (done[g]) {
+          result = assignment_bip_[g];
+          break;
+        }
+        done[g] = true;  // a chain that comes back here is a cycle: it stays Unknown
+        chain.push_back(g);
+        const Type& t = node_type(g);
+        if (t.kind != TypeKind::Reference) {
+          result = detail::bip_of_kind(t.kind);
+          break;
+        }
+        if (!t.target) break;
+        g = first_[t.target->module] + t.target->index;
+      }
+      for (std::size_t n : chain) assignment_bip_[n] = result;
+    }
+  }
+
+  const Type& node_type(std::size_t g) const {
+    std::size_t m = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), g) -
+                                             first_.begin() - 1);
+    // Modules without types share a first index: take the last one that has g.
+    while (first_[m] + view_.modules[m].types.size() <= g) ++m;
+    return view_.modules[m].types[g - first_[m]].type;
+  }
+
   void set_bip(Type& t) {
-    t.bip = bip_data(view_, t);
+    if (t.kind == TypeKind::Reference) {
+      t.bip =
+          t.target ? assignment_bip_[first_[t.target->module] + t.target->index] : BipData::Unknown;
+    } else {
+      t.bip = detail::bip_of_kind(t.kind);
+    }
     for (Component& c : t.components) set_bip(c.type);
     if (t.element) set_bip(*t.element);
   }
@@ -254,6 +293,8 @@ class Resolver {
   bipc::Diagnostics& diags_;
   std::vector<std::size_t> first_;  // global index of each module's first type assignment
   std::size_t count_ = 0;
+  detail::Lookup lookup_;
+  std::vector<BipData> assignment_bip_;
 };
 
 }  // namespace
