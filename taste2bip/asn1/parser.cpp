@@ -173,7 +173,7 @@ class Parser {
   // --- assignments ----------------------------------------------------------------------------
   /// Skips to what looks like the next assignment (or END), always moving on at least a token.
   void recover() {
-    advance();
+    if (!cur().is("END")) advance();
     while (cur().kind != TokenKind::EndOfFile && !cur().is("END")) {
       if (cur().kind == TokenKind::Identifier &&
           (next().kind == TokenKind::Assign ||
@@ -200,7 +200,8 @@ class Parser {
       assignment.at = at;
       if (cur().is("{") && !parse_parameters(assignment)) return recover();
       if (cur().kind != TokenKind::Assign) {
-        if (cur().kind == TokenKind::Identifier || cur().kind == TokenKind::Keyword) {
+        if ((cur().kind == TokenKind::Identifier || cur().kind == TokenKind::Keyword) &&
+            next().kind == TokenKind::Assign) {
           error(at, "value set and information object assignments ('" + name + " " +
                         std::string(cur().text) + " ::= ...') are not supported");
         } else {

@@ -53,8 +53,8 @@ class Resolver {
     for (const Module& m : view_.modules) {
       auto [it, fresh] = modules.emplace(m.name, m.at);
       if (!fresh) {
-        diags_.error(m.at, "the module '" + m.name + "' is already defined (" +
-                               line_of(it->second) + " of its file)");
+        diags_.error(
+            m.at, "the module '" + m.name + "' is already defined (" + line_of(it->second) + ")");
       }
       std::map<std::string, bipc::Location> names;
       for (const TypeAssignment& a : m.types) {
