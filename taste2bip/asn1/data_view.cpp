@@ -9,7 +9,7 @@ namespace detail {
 // Chains of IMPORTS longer than this are taken to loop (M imports x from N, N from M).
 constexpr int kMaxImportHops = 32;
 
-Lookup::Lookup(const DataView& view) : view_(view) {
+Lookup::Lookup(const DataView& view) {
   for (std::size_t m = 0; m < view.modules.size(); ++m) {
     const Module& module = view.modules[m];
     modules_.emplace(module.name, m);

@@ -34,7 +34,6 @@ class Lookup {
   /// The module that `module` imports `name` from, if it imports it from a known one.
   std::optional<std::size_t> imported_from(std::size_t module, std::string_view name) const;
 
-  const DataView& view_;
   Names modules_;
   std::vector<Names> types_, values_, imports_;  // imports_: name -> index of the module
 };
