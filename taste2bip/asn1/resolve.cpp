@@ -13,6 +13,7 @@ namespace smcbip::taste2bip::asn1 {
 namespace {
 
 constexpr int kMaxValueHops = 32;
+constexpr std::size_t kMaxErrorsPerFile = 20;
 
 std::string line_of(const bipc::Location& at) { return "line " + std::to_string(at.line); }
 
@@ -48,27 +49,37 @@ class Resolver {
   }
 
  private:
+  /// Reports an error, at most kMaxErrorsPerFile per file (then one note).
+  void error(bipc::Location at, std::string message) {
+    std::size_t& count = errors_per_file_[at.file];
+    if (count > kMaxErrorsPerFile) return;
+    if (++count > kMaxErrorsPerFile) {
+      diags_.note(at, "too many errors in this file: the others are not reported");
+      return;
+    }
+    diags_.error(at, std::move(message));
+  }
+
   void check_names() {
     std::map<std::string, bipc::Location> modules;
     for (const Module& m : view_.modules) {
       auto [it, fresh] = modules.emplace(m.name, m.at);
       if (!fresh) {
-        diags_.error(
-            m.at, "the module '" + m.name + "' is already defined (" + line_of(it->second) + ")");
+        error(m.at, "the module '" + m.name + "' is already defined (" + line_of(it->second) + ")");
       }
       std::map<std::string, bipc::Location> names;
       for (const TypeAssignment& a : m.types) {
         auto [at, fresh_name] = names.emplace(a.name, a.at);
         if (!fresh_name) {
-          diags_.error(a.at, "the type '" + a.name + "' is already defined in module '" + m.name +
-                                 "' (" + line_of(at->second) + ")");
+          error(a.at, "the type '" + a.name + "' is already defined in module '" + m.name + "' (" +
+                          line_of(at->second) + ")");
         }
       }
       for (const ValueAssignment& v : m.values) {
         auto [at, fresh_name] = names.emplace(v.name, v.at);
         if (!fresh_name) {
-          diags_.error(v.at, "the value '" + v.name + "' is already defined in module '" + m.name +
-                                 "' (" + line_of(at->second) + ")");
+          error(v.at, "the value '" + v.name + "' is already defined in module '" + m.name + "' (" +
+                          line_of(at->second) + ")");
         }
       }
     }
@@ -78,14 +89,14 @@ class Resolver {
     for (const Import& import : view_.modules[m].imports) {
       auto from = lookup_.module(import.module);
       if (!from) {
-        diags_.error(import.at, "unknown module '" + import.module + "' in IMPORTS");
+        error(import.at, "unknown module '" + import.module + "' in IMPORTS");
         continue;
       }
       for (std::size_t i = 0; i < import.names.size(); ++i) {
         const std::string& name = import.names[i];
         if (!lookup_.type(*from, name) && !lookup_.value(*from, name)) {
-          diags_.error(import.name_at[i], "module '" + import.module + "' has no type or value '" +
-                                              name + "' to import");
+          error(import.name_at[i],
+                "module '" + import.module + "' has no type or value '" + name + "' to import");
         }
       }
     }
@@ -120,7 +131,7 @@ class Resolver {
     if (!t.module.empty()) {
       auto index = lookup_.module(t.module);
       if (!index) {
-        diags_.error(t.at, "unknown module '" + t.module + "' in '" + shown + "'");
+        error(t.at, "unknown module '" + t.module + "' in '" + shown + "'");
         return;
       }
       t.target = lookup_.type(*index, t.name);
@@ -129,15 +140,14 @@ class Resolver {
     }
     if (!t.target) {
       if (t.module.empty() && imported(m, t.name)) return;
-      diags_.error(t.at, "unknown type '" + shown + "'");
+      error(t.at, "unknown type '" + shown + "'");
       return;
     }
     for (Value& v : t.arguments) resolve_value(v, m, params);
     const TypeAssignment* target = view_.type(*t.target);
     if (target->parameters.size() != t.arguments.size()) {
-      diags_.error(t.at, "'" + shown + "' takes " + std::to_string(target->parameters.size()) +
-                             " argument(s), but " + std::to_string(t.arguments.size()) +
-                             " are given");
+      error(t.at, "'" + shown + "' takes " + std::to_string(target->parameters.size()) +
+                      " argument(s), but " + std::to_string(t.arguments.size()) + " are given");
     }
   }
 
@@ -152,7 +162,7 @@ class Resolver {
     }
     auto id = lookup_.value(m, v.text);
     if (!id) {
-      if (!imported(m, v.text)) diags_.error(v.at, "unknown value '" + v.text + "'");
+      if (!imported(m, v.text)) error(v.at, "unknown value '" + v.text + "'");
       return;
     }
     // A value may name another value: follow the names to a number.
@@ -164,7 +174,7 @@ class Resolver {
       }
       id = lookup_.value(id->module, text);
     }
-    diags_.error(v.at, "the value '" + v.text + "' is not a number");
+    error(v.at, "the value '" + v.text + "' is not a number");
   }
 
   static bool parse_number(const std::string& text, Value& v) {
@@ -235,8 +245,8 @@ class Resolver {
             if (on) path += node[f.node]->name + " -> ";
           }
           path += node[e.to]->name;
-          diags_.error(e.at, "the type '" + node[e.to]->name + "' is defined in terms of itself (" +
-                                 path + ") without SEQUENCE OF, CHOICE or OPTIONAL between");
+          error(e.at, "the type '" + node[e.to]->name + "' is defined in terms of itself (" + path +
+                          ") without SEQUENCE OF, CHOICE or OPTIONAL between");
         }
       }
     }
@@ -295,6 +305,7 @@ class Resolver {
   std::size_t count_ = 0;
   detail::Lookup lookup_;
   std::vector<BipData> assignment_bip_;
+  std::map<std::uint32_t, std::size_t> errors_per_file_;
 };
 
 }  // namespace

@@ -166,5 +166,15 @@ TEST(Asn1Robustness, LongReferenceChainsAndCyclesDoNotRecurse) {
   EXPECT_EQ(r.type("T7")->bip, BipData::Unknown);
 }
 
+TEST(Asn1Robustness, ResolutionErrorsAreBoundedPerFile) {
+  std::string body;
+  for (int i = 0; i < 1000; ++i) body += "T" + std::to_string(i) + " ::= Unknown\n";
+  Read r;
+  r.add(testing::module(body)).resolved();
+  EXPECT_EQ(r.diags.error_count(), 20u);
+  EXPECT_EQ(r.diags.all().back().message,
+            "too many errors in this file: the others are not reported");
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::asn1
