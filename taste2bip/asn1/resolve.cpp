@@ -30,6 +30,13 @@ class Resolver {
       first_.push_back(count_);
       count_ += m.types.size();
     }
+    // The reader's errors count against the same budget per file.
+    for (const bipc::Diagnostic& d : diags.all()) {
+      if (d.severity == bipc::Severity::Error) ++errors_per_file_[d.location.file];
+    }
+    for (auto& [file, count] : errors_per_file_) {
+      if (count >= kMaxErrorsPerFile) count = kMaxErrorsPerFile + 1;  // already noted
+    }
   }
 
   void run() {
@@ -49,7 +56,7 @@ class Resolver {
   }
 
  private:
-  /// Reports an error, at most kMaxErrorsPerFile per file (then one note).
+  /// Reports an error, at most kMaxErrorsPerFile per file with the reader's (then one note).
   void error(bipc::Location at, std::string message) {
     std::size_t& count = errors_per_file_[at.file];
     if (count > kMaxErrorsPerFile) return;

@@ -176,5 +176,14 @@ TEST(Asn1Robustness, ResolutionErrorsAreBoundedPerFile) {
             "too many errors in this file: the others are not reported");
 }
 
+TEST(Asn1Robustness, ReaderAndResolverShareTheErrorBudget) {
+  std::string body;
+  for (int i = 0; i < 15; ++i) body += "S" + std::to_string(i) + " ::= SEQUENCE { a }\n";
+  for (int i = 0; i < 15; ++i) body += "T" + std::to_string(i) + " ::= Unknown\n";
+  Read r;
+  r.add(testing::module(body)).resolved();
+  EXPECT_EQ(r.diags.error_count(), 20u);
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::asn1
