@@ -162,7 +162,8 @@ void read_asn1(const std::string& text, std::uint32_t file, DataView& into,
 
 /// Resolves every reference of `view` (types, IMPORTS, value names in constraints), reports
 /// unknown names, bad imports and types defined in terms of themselves, and sets each Type's
-/// `bip`. Run it once all files are read; reading more afterwards needs another resolve.
+/// `bip`. Run it once all files are read; reading more afterwards needs another resolve. Its
+/// errors share the reader's budget of 20 per file.
 void resolve(DataView& view, bipc::Diagnostics& diags);
 
 /// The BIP data that a type maps to, following references (Unknown before resolve).

@@ -461,6 +461,9 @@ class Parser {
     } else if (cur().is("CONTAINING") || cur().is("PATTERN") || cur().is("FROM") ||
                cur().is("INCLUDES") || cur().is("CONSTRAINED")) {
       return error(cur().at, "'" + std::string(cur().text) + "' constraints are not supported");
+    } else if (t.kind == TypeKind::SequenceOf) {
+      return error(cur().at,
+                   "expected 'SIZE' in the constraint of a SEQUENCE OF, got " + describe(cur()));
     } else {
       if (!t.range.empty()) {
         return error(open, "a second value constraint on one type is not supported");

@@ -72,6 +72,8 @@ TEST(Asn1Errors, Constraints) {
             "t0.asn:3:1: error: expected ')' to close the constraint, got 'END'\n");
   EXPECT_EQ(errors_of(module("T ::= OCTET STRING (SIZE 3)")),
             "t0.asn:2:26: error: expected '(' after 'SIZE', got '3'\n");
+  EXPECT_EQ(errors_of(module("T ::= SEQUENCE (1..10) OF BOOLEAN")),
+            "t0.asn:2:17: error: expected 'SIZE' in the constraint of a SEQUENCE OF, got '1'\n");
   EXPECT_EQ(errors_of(module("T ::= INTEGER (0..99999999999999999999)")),
             "t0.asn:2:19: error: the integer 99999999999999999999 is outside the 64-bit range\n");
 }

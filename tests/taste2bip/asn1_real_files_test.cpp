@@ -63,6 +63,14 @@ TEST(Asn1RealFiles, EsrocosWatchdogDataViewWithItsTypes) {
   EXPECT_EQ(r.view.modules[int32->module].name, "TASTE-BasicTypes");
   EXPECT_EQ(r.view.type(*int32)->type.bip, BipData::Int);
   EXPECT_EQ(r.view.find_value("numBase-JointTrajectory", "Base-Types")->value, "200");
+  std::size_t types = 0;
+  for (const Module& m : r.view.modules) {
+    for (const TypeAssignment& a : m.types) {
+      EXPECT_NE(a.type.bip, BipData::Unknown) << a.name;
+      ++types;
+    }
+  }
+  EXPECT_GT(types, 100u);
 }
 
 TEST(Asn1RealFiles, EveryTasteDataViewReadsAndResolves) {
