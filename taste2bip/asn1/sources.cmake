@@ -2,5 +2,6 @@
 list(APPEND TASTE2BIP_SOURCES
   asn1/lexer.cpp
   asn1/parser.cpp
+  asn1/parser_type.cpp
   asn1/data_view.cpp
   asn1/resolve.cpp)
