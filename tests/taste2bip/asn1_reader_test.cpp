@@ -251,5 +251,29 @@ TEST(Asn1Reader, CommentsAreSkipped) {
   EXPECT_EQ(b.type.at.column, 46u);  // BOOLEAN
 }
 
+TEST(Asn1Reader, CommentedOutCommentLinesRunToTheEndOfTheLine) {
+  // TASTE's DataView template has `--  -- You can also declare constants`: the second "--" would
+  // end the comment under X.680 12.6.3, but it is a comment line commented out.
+  Read r;
+  r.add(module("--  -- You can also declare constants\nA ::= INTEGER -- x -- (0..1)"));
+  ASSERT_EQ(r.errors(), "");
+  EXPECT_EQ(r.type("A")->range.ranges[0].upper.integer, 1);
+}
+
+TEST(Asn1Reader, HyphenatedNamesAndExports) {
+  Read r;
+  r.add(
+      "My-Module DEFINITIONS IMPLICIT TAGS ::= BEGIN\nEXPORTS T-A, t-b;\n"
+      "T-A ::= INTEGER(0..1)--comment right after\nt-b T-A ::= 1\nEND\n");
+  ASSERT_EQ(r.errors(), "");
+  const Module& m = r.view.modules[0];
+  EXPECT_EQ(m.name, "My-Module");
+  EXPECT_EQ(m.tag_default, "IMPLICIT");
+  EXPECT_FALSE(m.exports_all);
+  EXPECT_EQ(m.types[0].name, "T-A");
+  EXPECT_EQ(m.values[0].name, "t-b");
+  EXPECT_EQ(m.values[0].at.line, 4u);
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::asn1
