@@ -134,4 +134,30 @@ BipData bip_data(const DataView& view, const Type& type) {
   return detail::bip_of_kind(t->kind);
 }
 
+std::optional<std::int64_t> bound_integer(const DataView& view, const Value& bound,
+                                          const Type* instance) {
+  switch (bound.kind) {
+    case Value::Kind::Integer:
+      return bound.integer;
+    case Value::Kind::Name:
+      break;
+    default:
+      return std::nullopt;
+  }
+  if (bound.resolved && !bound.is_parameter) {
+    return bound.is_integer ? std::optional<std::int64_t>(bound.integer) : std::nullopt;
+  }
+  if (!bound.is_parameter || instance == nullptr || !instance->target) return std::nullopt;
+  const TypeAssignment* generic = view.type(*instance->target);
+  if (generic == nullptr) return std::nullopt;
+  for (std::size_t i = 0; i < generic->parameters.size() && i < instance->arguments.size(); ++i) {
+    if (generic->parameters[i].name == bound.text) {
+      const Value& argument = instance->arguments[i];
+      if (argument.is_parameter) return std::nullopt;  // an argument of an enclosing instance
+      return bound_integer(view, argument);
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace smcbip::taste2bip::asn1

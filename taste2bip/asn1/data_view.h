@@ -43,6 +43,7 @@ struct Value {
   /// parameter of the enclosing parameterized assignment.
   bool resolved = false;
   bool is_parameter = false;
+  bool is_integer = false;  // a Name resolved to an integer value
   bipc::Location at;
 };
 
@@ -168,5 +169,12 @@ void resolve(DataView& view, bipc::Diagnostics& diags);
 
 /// The BIP data that a type maps to, following references (Unknown before resolve).
 BipData bip_data(const DataView& view, const Type& type);
+
+/// The integer a bound stands for after resolve: its number, the integer value it names, or,
+/// for a parameter of a parameterized assignment, the matching argument of `instance` (a
+/// Reference to that assignment, e.g. `T-String ::= T-StringP{numT-String}`). Nullopt for
+/// MIN, MAX, reals and what cannot be resolved.
+std::optional<std::int64_t> bound_integer(const DataView& view, const Value& bound,
+                                          const Type* instance = nullptr);
 
 }  // namespace smcbip::taste2bip::asn1

@@ -188,6 +188,7 @@ class Resolver {
     std::int64_t integer = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), integer);
     if (ec == std::errc() && end == text.data() + text.size()) {
+      v.is_integer = true;
       v.integer = integer;
       v.real = static_cast<double>(integer);
       return true;

@@ -63,6 +63,13 @@ TEST(Asn1RealFiles, EsrocosWatchdogDataViewWithItsTypes) {
   EXPECT_EQ(r.view.modules[int32->module].name, "TASTE-BasicTypes");
   EXPECT_EQ(r.view.type(*int32)->type.bip, BipData::Int);
   EXPECT_EQ(r.view.find_value("numBase-JointTrajectory", "Base-Types")->value, "200");
+  // Base-JointTrajectory ::= Base-JointTrajectoryP{numBase-JointTrajectory}, a SEQUENCE
+  // (SIZE(1..maxBase-JointTrajectory)) OF Base-JointState; numBase-JointTrajectory is 200.
+  const Type* instance = r.type("Base-JointTrajectory");
+  ASSERT_NE(instance, nullptr);
+  const Type* generic = r.type("Base-JointTrajectoryP");
+  ASSERT_NE(generic, nullptr);
+  EXPECT_EQ(bound_integer(r.view, generic->size.ranges[0].upper, instance), 200);
   std::size_t types = 0;
   for (const Module& m : r.view.modules) {
     for (const TypeAssignment& a : m.types) {

@@ -90,6 +90,24 @@ TEST(Asn1Resolve, ValueNamesInConstraintsAndParameters) {
   EXPECT_EQ(r.type("Q")->bip, BipData::Extern);
 }
 
+TEST(Asn1Resolve, BoundsOfParameterizedInstances) {
+  Read r;
+  r.add(module("max-len INTEGER ::= 60\nhalf REAL ::= 0.5\n"
+               "P{INTEGER: lo, INTEGER: hi} ::= SEQUENCE (SIZE(lo..hi)) OF BOOLEAN\n"
+               "Q ::= P{2, max-len}\nR ::= REAL (0..half)\nI ::= INTEGER (MIN..7)"))
+      .resolved();
+  ASSERT_EQ(r.errors(), "");
+  const Type* p = r.type("P");
+  const Type* q = r.type("Q");
+  EXPECT_EQ(bound_integer(r.view, p->size.ranges[0].lower, q), 2);
+  EXPECT_EQ(bound_integer(r.view, p->size.ranges[0].upper, q), 60);
+  EXPECT_EQ(bound_integer(r.view, p->size.ranges[0].upper), std::nullopt);  // no instance
+  EXPECT_EQ(bound_integer(r.view, r.type("R")->range.ranges[0].upper), std::nullopt);  // real
+  EXPECT_DOUBLE_EQ(r.type("R")->range.ranges[0].upper.real, 0.5);
+  EXPECT_EQ(bound_integer(r.view, r.type("I")->range.ranges[0].lower), std::nullopt);  // MIN
+  EXPECT_EQ(bound_integer(r.view, r.type("I")->range.ranges[0].upper), 7);
+}
+
 TEST(Asn1Resolve, UnknownNamesAndBadImports) {
   Read r;
   r.add(
