@@ -3,4 +3,5 @@
 // print.
 #pragma once
 
+#include "taste2bip/asn1/data_view.h"
 #include "taste2bip/names.h"
