@@ -4,4 +4,5 @@
 #pragma once
 
 #include "taste2bip/asn1/data_view.h"
+#include "taste2bip/interface_view/interface_view.h"
 #include "taste2bip/names.h"
