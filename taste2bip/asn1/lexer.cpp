@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "taste2bip/detail/text_cursor.h"
+
 namespace smcbip::taste2bip::asn1::detail {
 namespace {
 
@@ -101,10 +103,10 @@ bool is_symbol(char c) {
   return std::string_view("{}(),;|.:-[]<>@!^&*=+").find(c) != std::string_view::npos;
 }
 
-class Lexer {
+class Lexer : private taste2bip::detail::TextCursor {
  public:
   Lexer(std::string_view text, std::uint32_t file, bipc::Diagnostics& diags, std::size_t max)
-      : text_(text), file_(file), diags_(diags), max_errors_(max) {}
+      : TextCursor(text, file), diags_(diags), max_errors_(max) {}
 
   std::vector<Token> run() {
     std::vector<Token> tokens;
@@ -130,19 +132,6 @@ class Lexer {
     return is_space(c) || is_alnum(c) || is_symbol(c) || c == '"' || c == '\'' || c == '/';
   }
 
-  bipc::Location here() const { return bipc::Location{file_, line_, column_}; }
-  char peek(std::size_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
-  void advance() {
-    if (text_[pos_] == '\n') {
-      ++line_;
-      column_ = 1;
-    } else {
-      ++column_;
-    }
-    ++pos_;
-  }
   void error(bipc::Location at, std::string message) {
     diags_.error(at, std::move(message));
     ++errors_;
@@ -270,13 +259,9 @@ class Lexer {
     return TokenKind::Symbol;  // pos_ unchanged: the caller reports the invalid bytes
   }
 
-  std::string_view text_;
-  std::uint32_t file_;
   bipc::Diagnostics& diags_;
   std::size_t max_errors_;
   std::size_t errors_ = 0;
-  std::size_t pos_ = 0;
-  std::uint32_t line_ = 1, column_ = 1;
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The lexer of the AADL subset TASTE writes for interface views, with located errors.
 #include <cctype>
 
+#include "taste2bip/detail/text_cursor.h"
 #include "taste2bip/interface_view/detail/aadl_syntax.h"
 
 namespace smcbip::taste2bip::detail {
@@ -28,10 +29,10 @@ namespace {
 bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
-class Lexer {
+class Lexer : private taste2bip::detail::TextCursor {
  public:
   Lexer(std::string_view text, std::uint32_t file, AadlErrors& errors)
-      : text_(text), file_(file), errors_(errors) {}
+      : TextCursor(text, file), errors_(errors) {}
 
   std::vector<AadlToken> run() {
     std::vector<AadlToken> tokens;
@@ -78,21 +79,6 @@ class Lexer {
     return !is_letter(c) && !is_digit(c) && kStarts.find(c) == std::string_view::npos;
   }
 
-  bipc::Location here() const { return {file_, line_, column_}; }
-
-  void advance() {
-    if (text_[pos_] == '\n') {
-      ++line_;
-      column_ = 1;
-    } else {
-      ++column_;
-    }
-    ++pos_;
-  }
-
-  char peek(std::size_t ahead) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
 
   void skip_blanks() {
     while (pos_ < text_.size()) {
@@ -179,11 +165,7 @@ class Lexer {
     return false;
   }
 
-  std::string_view text_;
-  std::uint32_t file_;
   AadlErrors& errors_;
-  std::size_t pos_ = 0;
-  std::uint32_t line_ = 1, column_ = 1;
 };
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tests/taste2bip/asn1_test_support.h"
+#include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip::asn1 {
 namespace {
@@ -15,14 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::Read;
 
-const fs::path kData = fs::path(SMCBIP_SOURCE_DIR) / ".." / "shared" / "data";
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+const fs::path kData = test::shared_data_dir();
+using test::file_text;
 
 std::vector<fs::path> asn_files_under(const fs::path& dir) {
   std::vector<fs::path> files;
@@ -39,7 +34,7 @@ std::vector<fs::path> asn_files_under(const fs::path& dir) {
 std::string read_and_resolve(const std::vector<fs::path>& paths, Read& r) {
   for (const fs::path& path : paths) {
     std::uint32_t file = r.files.add(path.string());
-    read_asn1(slurp(path), file, r.view, r.diags);
+    read_asn1(file_text(path), file, r.view, r.diags);
   }
   r.resolved();
   return r.errors();
@@ -88,7 +83,7 @@ TEST(Asn1RealFiles, EveryTasteDataViewReadsAndResolves) {
   for (const fs::path& path : asn_files_under(taste)) {
     SCOPED_TRACE(path.string());
     std::vector<fs::path> paths{path};
-    std::string text = slurp(path);
+    std::string text = file_text(path);
     // TASTE-BasicTypes comes with the toolchain: the folder's copy, or kazoo's.
     if (text.find("FROM TASTE-BasicTypes") != std::string::npos &&
         text.find("TASTE-BasicTypes DEFINITIONS") == std::string::npos) {

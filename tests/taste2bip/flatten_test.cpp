@@ -9,6 +9,7 @@
 #include <string>
 
 #include "taste2bip/interface_view/interface_view.h"
+#include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip {
 namespace {
@@ -222,14 +223,11 @@ TEST(Flatten, HandMadeCyclesAndBadParentsTerminate) {
 // ---- The nested real views ----
 
 InterfaceView read_real(const std::string& relative, bool& skipped) {
-  const std::string path = std::string(SMCBIP_SOURCE_DIR) + "/../shared/data/taste/" + relative;
+  const std::filesystem::path path = test::shared_data_dir() / "taste" / relative;
   skipped = !std::filesystem::exists(path);
   if (skipped) return {};
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
   bipc::Diagnostics diags;
-  InterfaceView view = read_xml_interface_view(text.str(), 0, diags);
+  InterfaceView view = read_xml_interface_view(test::file_text(path), 0, diags);
   EXPECT_FALSE(diags.has_errors()) << messages(diags);
   return view;
 }

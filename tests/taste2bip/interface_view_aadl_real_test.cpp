@@ -8,20 +8,15 @@
 #include <string>
 
 #include "taste2bip/interface_view/interface_view.h"
+#include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kShared = fs::path(SMCBIP_SOURCE_DIR) / ".." / "shared" / "data";
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+const fs::path kShared = test::shared_data_dir();
+using test::file_text;
 
 struct Read {
   InterfaceView view;
@@ -32,7 +27,7 @@ struct Read {
 /// Reads `path` into `r`; false when the file is not there (a user's clone has no ../shared).
 bool read_file(const fs::path& path, Read& r) {
   if (!fs::exists(path)) return false;
-  r.view = read_aadl_interface_view(slurp(path), r.files.add(path.string()), r.diags);
+  r.view = read_aadl_interface_view(file_text(path), r.files.add(path.string()), r.diags);
   return true;
 }
 
@@ -282,7 +277,7 @@ TEST(AadlRobustness, GarbageNestingNulsAndTruncations) {
   // Every prefix of a real view ends with errors, never a crash or a hang.
   const fs::path watchdog = kShared / "esrocos-mc_watchdog/TasteModel/InterfaceView.aadl";
   if (fs::exists(watchdog)) {
-    const std::string text = slurp(watchdog);
+    const std::string text = file_text(watchdog);
     for (std::size_t n = 0; n < text.size(); n += 97) expect_bounded(text.substr(0, n));
   }
 }

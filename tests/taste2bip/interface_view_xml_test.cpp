@@ -8,6 +8,7 @@
 #include <string>
 
 #include "taste2bip/interface_view/interface_view.h"
+#include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip {
 namespace {
@@ -306,7 +307,7 @@ TEST(XmlInterfaceView, DeepNestingIsAnErrorNotACrash) {
 // ---- The real views of ../shared/data/taste (absent from a user's clone) ----
 
 std::string data_path(const std::string& relative) {
-  return std::string(SMCBIP_SOURCE_DIR) + "/../shared/data/taste/" + relative;
+  return (test::shared_data_dir() / "taste" / relative).string();
 }
 
 /// Reads a real view; sets `skipped` when the shared data is not there.
@@ -314,11 +315,8 @@ InterfaceView read_real(const std::string& relative, bool& skipped) {
   const std::string path = data_path(relative);
   skipped = !std::filesystem::exists(path);
   if (skipped) return {};
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
   bipc::Diagnostics diags;
-  InterfaceView view = read_xml_interface_view(text.str(), 0, diags);
+  InterfaceView view = read_xml_interface_view(test::file_text(path), 0, diags);
   EXPECT_EQ(diags.all().size(), 0u) << relative << "\n" << messages(diags);
   return view;
 }
@@ -331,10 +329,7 @@ InterfaceView read_real(const std::string& relative, bool& skipped) {
 TEST(XmlInterfaceViewReal, EveryTruncationIsAnErrorNotACrash) {
   const std::string path = data_path("esa-spacecreator/iv_remote_control/interfaceview.xml");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no ../shared/data/taste";
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream whole;
-  whole << in.rdbuf();
-  const std::string text = whole.str();
+  const std::string text = test::file_text(path);
   for (std::size_t size = 0; size + 2 < text.size(); size += 7) {
     bipc::Diagnostics diags;
     (void)read(text.substr(0, size), diags);
