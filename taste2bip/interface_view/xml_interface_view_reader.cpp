@@ -25,15 +25,16 @@ constexpr std::size_t kMaxNesting = 200;
 /// Maps pugixml's byte offsets to 1-based line:column (columns count bytes).
 class LineIndex {
  public:
-  LineIndex(const std::string& text, std::uint32_t file) : file_(file) {
+  LineIndex(const std::string& text, std::uint32_t file) : file_(file), size_(text.size()) {
     starts_.push_back(0);
     for (std::size_t i = 0; i < text.size(); ++i) {
       if (text[i] == '\n') starts_.push_back(i + 1);
     }
   }
 
+  /// An offset past the end (pugixml may give one on truncated text) is the end of the text.
   bipc::Location at(std::ptrdiff_t offset) const {
-    const std::size_t off = offset < 0 ? 0 : static_cast<std::size_t>(offset);
+    const std::size_t off = offset < 0 ? 0 : std::min(static_cast<std::size_t>(offset), size_);
     const auto next = std::upper_bound(starts_.begin(), starts_.end(), off);
     const auto line = static_cast<std::size_t>(next - starts_.begin());  // >= 1
     return {file_, static_cast<std::uint32_t>(line),
@@ -48,6 +49,7 @@ class LineIndex {
 
  private:
   std::uint32_t file_;
+  std::size_t size_;
   std::vector<std::size_t> starts_;
 };
 
