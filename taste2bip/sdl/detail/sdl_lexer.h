@@ -1,0 +1,71 @@
+// Tokens of SDL-PR text and the lexer producing them (comments skipped, keywords left as words).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bipc/diagnostics.h"
+
+namespace smcbip::taste2bip::sdl::detail {
+
+enum class TokenKind : std::uint8_t {
+  EndOfFile,
+  Word,  // a name or keyword; `lower` holds it in lower case
+  Integer,
+  Real,
+  String,  // `value` holds the contents
+  LParen,
+  RParen,
+  LBrace,
+  RBrace,
+  Comma,
+  Semicolon,
+  Colon,
+  Assign,  // :=
+  Dot,
+  Bang,
+  Plus,
+  Minus,
+  Star,
+  Slash,
+  Concat,  // //
+  Equal,
+  NotEqual,  // /=
+  Less,
+  LessEqual,
+  Greater,
+  GreaterEqual,
+  Arrow,  // =>
+};
+
+struct Token {
+  TokenKind kind = TokenKind::EndOfFile;
+  std::string text;   // as written
+  std::string lower;  // Word: lower case
+  std::string value;  // String: contents
+  bipc::Location at;
+};
+
+/// Counts the errors of one file and stops reporting past a limit.
+class ErrorBudget {
+ public:
+  ErrorBudget(bipc::Diagnostics& diags, std::size_t max_errors) : diags_(diags), max_(max_errors) {}
+  void error(bipc::Location at, std::string message);
+  bool exhausted() const { return count_ >= max_; }
+
+ private:
+  bipc::Diagnostics& diags_;
+  std::size_t max_;
+  std::size_t count_ = 0;
+};
+
+/// Lexes the whole text; the last token is EndOfFile. Stops early once the budget is exhausted.
+std::vector<Token> lex_sdl(std::string_view text, std::uint32_t file, ErrorBudget& errors);
+
+/// How a token is named in a message: `';'`, `'state'`, `end of file`.
+std::string describe(const Token& token);
+
+}  // namespace smcbip::taste2bip::sdl::detail
