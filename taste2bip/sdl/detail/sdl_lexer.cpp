@@ -69,6 +69,7 @@ class Scanner {
         while (!at_end() && !(peek() == '*' && peek(1) == '/')) advance();
         if (at_end()) {
           errors_.error(start, "unterminated comment: expected '*/' before end of file");
+          errors_.set_ran_off_end();
           return;
         }
         advance();
@@ -118,6 +119,7 @@ class Scanner {
     for (;;) {
       if (at_end()) {
         errors_.error(start, "unterminated string: expected a closing quote before end of file");
+        errors_.set_ran_off_end();
         return false;
       }
       if (peek() == '\'') {

@@ -55,11 +55,16 @@ class ErrorBudget {
   ErrorBudget(bipc::Diagnostics& diags, std::size_t max_errors) : diags_(diags), max_(max_errors) {}
   void error(bipc::Location at, std::string message);
   bool exhausted() const { return count_ >= max_; }
+  /// Set by the lexer when an unterminated comment or string ran to the end of the text: what
+  /// the parser then finds missing at the end is a consequence, not a new error.
+  void set_ran_off_end() { ran_off_end_ = true; }
+  bool ran_off_end() const { return ran_off_end_; }
 
  private:
   bipc::Diagnostics& diags_;
   std::size_t max_;
   std::size_t count_ = 0;
+  bool ran_off_end_ = false;
 };
 
 /// Lexes the whole text; the last token is EndOfFile. Stops early once the budget is exhausted.

@@ -171,7 +171,47 @@ bool Parser::accept_word(std::string_view keyword) {
   return true;
 }
 
-void Parser::error_here(std::string message) { errors_.error(peek().at, std::move(message)); }
+void Parser::error_here(std::string message) {
+  // Past a nesting too deep, or at an end of file an unterminated comment or string reached,
+  // what is missing is a consequence of the error already reported.
+  if (stopped_ || (at_eof() && errors_.ran_off_end())) return;
+  errors_.error(peek().at, std::move(message));
+}
+
+bool Parser::at_unsupported() const {
+  // Constructs of SDL (Z.100) that OpenGEODE's inputs do not use and this reader does not read.
+  static constexpr std::array<std::string_view, 17> kUnsupported = {"newtype",
+                                                                    "syntype",
+                                                                    "synonym",
+                                                                    "signallist",
+                                                                    "create",
+                                                                    "export",
+                                                                    "import",
+                                                                    "exported",
+                                                                    "imported",
+                                                                    "alternative",
+                                                                    "macro",
+                                                                    "service",
+                                                                    "remote",
+                                                                    "gate",
+                                                                    "package",
+                                                                    "operator",
+                                                                    "channelsubstructure"};
+  const Token& token = peek();
+  if (token.kind != TokenKind::Word) return false;
+  for (std::string_view word : kUnsupported) {
+    if (word == token.lower) return true;
+  }
+  return false;
+}
+
+void Parser::error_unexpected(const std::string& expected) {
+  if (at_unsupported()) {
+    error_here("'" + peek().text + "' is not supported by this reader (expected " + expected + ")");
+    return;
+  }
+  error_here("expected " + expected + ", got " + describe(peek()));
+}
 
 namespace {
 
@@ -247,7 +287,10 @@ bool Parser::end_statement(std::string_view what) {
   if (!stopped()) {
     error_here("expected ';' after " + std::string(what) + ", got " + describe(peek()));
   }
-  skip_past_semicolon();
+  // Resume at the next ';' or at a keyword that opens or closes a construct, whichever is first.
+  while (!at_eof() && !(at(TokenKind::Word) && is_reserved(peek().lower))) {
+    if (take().kind == TokenKind::Semicolon) break;
+  }
   return false;
 }
 
@@ -269,7 +312,7 @@ SdlFile Parser::parse_file() {
     } else if (at_word("procedure")) {
       file.procedures.push_back(parse_procedure());
     } else if (!accept(TokenKind::Semicolon)) {
-      error_here("expected 'use', 'system', 'process' or 'procedure', got " + describe(peek()));
+      error_unexpected("'use', 'system', 'process' or 'procedure'");
       skip_past_semicolon();
     }
   }
@@ -537,8 +580,8 @@ void Parser::parse_body(Body& body, BodyEnd end, Procedure* procedure, Composite
     } else if (composite != nullptr && at_word("out") && at(TokenKind::LParen, 1)) {
       for (auto& point : parse_point_list("out")) composite->exit_points.push_back(point);
     } else if (!accept(TokenKind::Semicolon)) {
-      error_here("expected 'dcl', 'timer', 'procedure', 'start', 'state', 'connection' or '" +
-                 std::string(end_word) + "', got " + describe(peek()));
+      error_unexpected("'dcl', 'timer', 'procedure', 'start', 'state', 'connection' or '" +
+                       std::string(end_word) + "'");
       skip_past_semicolon();
     }
   }

@@ -49,6 +49,11 @@ class Parser {
   bool accept(TokenKind kind);
   bool accept_word(std::string_view keyword);
   void error_here(std::string message);
+  /// Reports the current token where one of `expected` should be: an SDL construct this reader
+  /// does not support is named as such.
+  void error_unexpected(const std::string& expected);
+  /// Whether the current token opens an SDL construct this reader does not support.
+  bool at_unsupported() const;
   /// Consumes `kind` or reports "expected X <context>, got Y"; false when missing.
   bool expect(TokenKind kind, std::string_view context);
   bool expect_word(std::string_view keyword, std::string_view context);

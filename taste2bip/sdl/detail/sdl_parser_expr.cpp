@@ -113,12 +113,13 @@ Expr Parser::parse_postfix(bool allow_choice) {
   Expr expr = parse_primary(allow_choice);
   for (;;) {
     if (at(TokenKind::LParen)) {
-      Expr call = make(Expr::Kind::Call, peek().at);
+      Expr call = make(Expr::Kind::Call, expr.at);
       call.operands.push_back(std::move(expr));
       for (Expr& argument : parse_arguments()) call.operands.push_back(std::move(argument));
       expr = std::move(call);
     } else if (at(TokenKind::Dot) || at(TokenKind::Bang)) {
-      Expr field = make(Expr::Kind::Field, take().at);
+      take();
+      Expr field = make(Expr::Kind::Field, expr.at);
       if (auto name = expect_name("a field name after '.' or '!'")) field.text = *name;
       field.operands.push_back(std::move(expr));
       expr = std::move(field);

@@ -77,8 +77,7 @@ void Parser::parse_state_parts(State& state) {
       }
       end_statement("'save'");
     } else {
-      error_here("expected 'input', 'provided', 'save', 'connect' or 'endstate' in state, got " +
-                 describe(peek()));
+      error_unexpected("'input', 'provided', 'save', 'connect' or 'endstate'");
       skip_past_semicolon();
     }
   }

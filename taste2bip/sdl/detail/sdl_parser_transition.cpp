@@ -22,6 +22,11 @@ Transition Parser::parse_transition() {
   transition.at = peek().at;
   while (!stopped()) {
     if (accept(TokenKind::Semicolon)) continue;  // an empty action, as OpenGEODE accepts it
+    if (at_unsupported()) {
+      error_unexpected("an action");
+      skip_past_semicolon();
+      continue;
+    }
     if (!at_action_start()) break;
     transition.actions.push_back(parse_action());
     const Action::Kind kind = transition.actions.back().kind;
