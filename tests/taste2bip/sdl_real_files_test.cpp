@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "taste2bip/sdl/detail/sdl_lexer.h"
 #include "taste2bip/sdl/sdl_reader.h"
 
 namespace smcbip::taste2bip::sdl {
@@ -46,6 +48,157 @@ TEST(SdlRealFiles, EveryPrFileReadsWithoutErrors) {
     const SdlFile sdl = read_sdl(slurp(path), file, diags);
     EXPECT_TRUE(diags.all().empty()) << diags.format(sources);
     EXPECT_FALSE(sdl.systems.empty() && sdl.processes.empty()) << path << " declares nothing";
+  }
+}
+
+// How many nodes of the tree each keyword opens, to check that nothing was dropped.
+class KeywordCounter {
+ public:
+  std::map<std::string, std::size_t> counts;
+
+  void file(const SdlFile& file) {
+    for (const System& system : file.systems) {
+      for (const Procedure& procedure : system.procedures) this->procedure(procedure);
+      for (const Block& block : system.blocks) this->block(block);
+    }
+    for (const Process& process : file.processes) this->process(process);
+    for (const Procedure& procedure : file.procedures) this->procedure(procedure);
+  }
+
+ private:
+  void block(const Block& block) {
+    counts["connect"] += block.connections.size();
+    for (const Process& process : block.processes) this->process(process);
+    for (const Procedure& procedure : block.procedures) this->procedure(procedure);
+    for (const Block& inner : block.blocks) this->block(inner);
+  }
+  void process(const Process& process) {
+    ++counts["process"];
+    body(process.body);
+  }
+  void procedure(const Procedure& procedure) {
+    ++counts["procedure"];
+    body(procedure.body);
+  }
+  void body(const Body& body) {
+    for (const Variable& variable : body.variables) {
+      if (variable.initial) expr(*variable.initial);
+    }
+    for (const Procedure& procedure : body.procedures) this->procedure(procedure);
+    for (const Start& start : body.starts) {
+      ++counts["start"];
+      transition(start.transition);
+    }
+    for (const FloatingLabel& label : body.labels) {
+      ++counts["connection"];
+      transition(label.transition);
+    }
+    for (const CompositeState& composite : body.composite_states) {
+      ++counts["state"];
+      ++counts["substructure"];
+      this->body(composite.body);
+    }
+    for (const State& state : body.states) {
+      ++counts["state"];
+      for (const Input& input : state.inputs) {
+        ++counts["input"];
+        transition(input.transition);
+      }
+      for (const ContinuousSignal& signal : state.continuous) {
+        ++counts["provided"];
+        expr(signal.condition);
+        transition(signal.transition);
+      }
+      for (const ExitConnection& connection : state.connections) {
+        ++counts["connect"];
+        transition(connection.transition);
+      }
+    }
+  }
+  void transition(const Transition& transition) {
+    for (const Action& action : transition.actions) this->action(action);
+  }
+  void action(const Action& action) {
+    for (const Expr& argument : action.arguments) expr(argument);
+    if (action.value) expr(*action.value);
+    switch (action.kind) {
+      case Action::Kind::Task: {
+        // A bare assignment list in a for loop reads as a task without the keyword.
+        const bool keyword = action.task.empty() || action.task[0].at.line != action.at.line ||
+                             action.task[0].at.column != action.at.column;
+        if (keyword) ++counts["task"];
+        for (const TaskElement& element : action.task) {
+          expr(element.target);
+          expr(element.value);
+          for (const ForLoop& loop : element.loop) {
+            ++counts["for"];
+            expr(loop.iterable);
+            transition(loop.body);
+          }
+        }
+        break;
+      }
+      case Action::Kind::Output:
+        ++counts["output"];
+        for (const OutputSignal& signal : action.outputs) {
+          for (const Expr& argument : signal.arguments) expr(argument);
+        }
+        break;
+      case Action::Kind::Call:
+        ++counts["call"];
+        break;
+      case Action::Kind::Decision:
+        ++counts["decision"];
+        expr(action.decision.question);
+        for (const Answer& answer : action.decision.answers) {
+          for (const RangeCondition& condition : answer.conditions) {
+            expr(condition.low);
+            expr(condition.high);
+          }
+          transition(answer.transition);
+        }
+        break;
+      case Action::Kind::Join:
+        ++counts["join"];
+        break;
+      case Action::Kind::NextState:
+        ++counts["nextstate"];
+        break;
+      case Action::Kind::Stop:
+        ++counts["stop"];
+        break;
+      case Action::Kind::Return:
+        ++counts["return"];
+        break;
+      case Action::Kind::Label:
+        break;
+    }
+  }
+  void expr(const Expr& e) {
+    if (e.kind == Expr::Kind::ProcedureCall) ++counts["call"];
+    for (const Expr& operand : e.operands) expr(operand);
+  }
+};
+
+TEST(SdlRealFiles, EveryKeywordOfTheFileIsANodeOfTheTree) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  static const char* const kKeywords[] = {
+      "process", "procedure", "start",   "connection", "state", "substructure",
+      "input",   "provided",  "connect", "task",       "for",   "output",
+      "call",    "decision",  "join",    "nextstate",  "stop",  "return"};
+  for (const fs::path& path : pr_files()) {
+    const std::string text = slurp(path);
+    bipc::Diagnostics diags;
+    detail::ErrorBudget budget(diags, 20);
+    std::map<std::string, std::size_t> written;
+    for (const detail::Token& token : detail::lex_sdl(text, 0, budget)) {
+      if (token.kind == detail::TokenKind::Word) ++written[token.lower];
+    }
+    KeywordCounter read;
+    read.file(read_sdl(text, 0, diags));
+    for (const char* keyword : kKeywords) {
+      EXPECT_EQ(read.counts[keyword], written[keyword]) << path << ": '" << keyword << "'";
+    }
   }
 }
 
