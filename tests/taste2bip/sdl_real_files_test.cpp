@@ -51,6 +51,58 @@ TEST(SdlRealFiles, EveryPrFileReadsWithoutErrors) {
   }
 }
 
+SdlFile read_data_file(const std::string& relative) {
+  bipc::Diagnostics diags;
+  SdlFile file = read_sdl(slurp(kData / relative), 0, diags);
+  EXPECT_FALSE(diags.has_errors()) << relative;
+  return file;
+}
+
+TEST(SdlRealFiles, NestedStatesOfOpenGeodeTestNextstate) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  const SdlFile file = read_data_file("taste/esa-opengeode-testsuite/test-nextstate/og.pr");
+  ASSERT_EQ(file.systems.size(), 1u);
+  const System& system = file.systems[0];
+  EXPECT_EQ(system.signals.size(), 2u);
+  ASSERT_EQ(system.blocks.size(), 1u);
+  ASSERT_EQ(system.blocks[0].processes.size(), 1u);
+  const Body& body = system.blocks[0].processes[0].body;
+  ASSERT_EQ(body.composite_states.size(), 4u);
+  EXPECT_EQ(body.composite_states[0].name, "wait");
+  ASSERT_EQ(body.composite_states[0].body.procedures.size(), 1u);
+  EXPECT_EQ(body.composite_states[0].body.procedures[0].name, "entry");
+  const CompositeState& went = body.composite_states[3];
+  EXPECT_EQ(went.name, "went");
+  EXPECT_EQ(went.exit_points, (std::vector<std::string>{"e2", "e1"}));
+  ASSERT_EQ(went.body.states.size(), 2u);
+  EXPECT_EQ(went.body.states[1].inputs.at(1).transition.actions.at(1).kind, Action::Kind::Return);
+  ASSERT_EQ(body.labels.size(), 1u);
+  EXPECT_EQ(body.labels[0].name, "hello");
+  ASSERT_EQ(body.states.size(), 5u);
+  EXPECT_TRUE(body.states[0].is_any);
+  EXPECT_EQ(body.states[0].except, (std::vector<std::string>{"wait", "went"}));
+  const State& went_exits = body.states[4];
+  ASSERT_EQ(went_exits.connections.size(), 2u);
+  EXPECT_EQ(went_exits.connections[0].exit_points, (std::vector<std::string>{"e1"}));
+  EXPECT_EQ(went_exits.connections[0].transition.actions.at(0).kind, Action::Kind::Join);
+  EXPECT_EQ(went_exits.comment, "should not be\nan infinite loop");
+}
+
+TEST(SdlRealFiles, KazooOrchestratorTaskOfAsn1Values) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  const SdlFile file = read_data_file(
+      "taste/esa-kazoo/memoryscrub-opengeode/work/orchestrator/SDL/src/"
+      "orchestrator.pr");
+  ASSERT_EQ(file.processes.size(), 1u);
+  const Body& body = file.processes[0].body;
+  EXPECT_EQ(body.variables.size(), 14u);
+  ASSERT_EQ(body.starts.size(), 1u);
+  const Action& task = body.starts[0].transition.actions.at(0);
+  ASSERT_EQ(task.kind, Action::Kind::Task);
+  EXPECT_EQ(task.task.size(), 23u);
+  EXPECT_EQ(task.comment, "This is a comment\nA multiline one, I mean");
+}
+
 // How many nodes of the tree each keyword opens, to check that nothing was dropped.
 class KeywordCounter {
  public:
