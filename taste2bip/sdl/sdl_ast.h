@@ -49,9 +49,11 @@ struct Expr {
     Integer,        // text: the digits as written
     Real,           // text: as written (`10.0`, `1e3`)
     String,         // text: contents, a doubled quote read as one
+    BitString,      // `'0101'B`: text the binary digits
+    OctetString,    // `'0A'H`: text the hexadecimal digits
     Boolean,        // text: "true" or "false"
-    Name,           // text: the name as spelt (also enumerated values, `-` never)
-    Field,          // operands[0].text (`a.b` or `a!b`): text is the field name
+    Name,           // text: the name as spelt (variables, constants, enumerated values)
+    Field,          // `a.b` or `a!b`: operands[0] the record, text the field name
     Call,           // operands[0] the callee, operands[1..] the arguments (also indexing `a(i)`)
     ProcedureCall,  // `call p(args)` inside an expression: operands as for Call
     Unary,          // op, operands[0]
@@ -81,7 +83,7 @@ struct RangeCondition {
   enum class Kind : std::uint8_t {
     Value,   // `(3)`
     Open,    // `(>= 3)`: op is one of = /= < <= > >=
-    Closed,  // `(1:5)`: low and high
+    Closed,  // `(1:5)`: low and high. As in OpenGEODE's grammar, `(name:x)` is a CHOICE value
   };
   Kind kind = Kind::Value;
   Operator op = Operator::Equal;

@@ -42,6 +42,10 @@ inline std::string show(const Expr& e) {
       return e.text;
     case Expr::Kind::String:
       return "'" + e.text + "'";
+    case Expr::Kind::BitString:
+      return "'" + e.text + "'B";
+    case Expr::Kind::OctetString:
+      return "'" + e.text + "'H";
     case Expr::Kind::Field:
       return show(e.operands[0]) + "." + e.text;
     case Expr::Kind::Call:

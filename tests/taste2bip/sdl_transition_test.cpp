@@ -176,6 +176,9 @@ TEST(SdlExpression, Literals) {
   EXPECT_EQ(expression("'text'"), "'text'");
   EXPECT_EQ(expression("TRUE"), "true");
   EXPECT_EQ(expression("hello"), "hello");
+  EXPECT_EQ(expression("'0101'B"), "'0101'B");
+  EXPECT_EQ(expression("'0aFF'h"), "'0aFF'H");
+  EXPECT_EQ(expression("'xyz' // 'ab'"), "(// 'xyz' 'ab')");
 }
 
 TEST(SdlExpression, Precedence) {

@@ -130,6 +130,15 @@ class Scanner {
       advance();
     }
     token.kind = TokenKind::String;
+    // ASN.1 bit and octet string values: '0101'B, '0A'H.
+    const char suffix = static_cast<char>(std::toupper(static_cast<unsigned char>(peek())));
+    if ((suffix == 'B' || suffix == 'H') && !is_word_char(peek(1))) {
+      const std::string_view digits = suffix == 'B' ? "01" : "0123456789abcdefABCDEF";
+      if (token.value.find_first_not_of(digits) == std::string::npos) {
+        token.kind = suffix == 'B' ? TokenKind::BitString : TokenKind::OctetString;
+        advance();
+      }
+    }
     return true;
   }
 
@@ -221,7 +230,12 @@ std::vector<Token> lex_sdl(std::string_view text, std::uint32_t file, ErrorBudge
 
 std::string describe(const Token& token) {
   if (token.kind == TokenKind::EndOfFile) return "end of file";
-  if (token.kind == TokenKind::String) return "string '" + token.value + "'";
+  if (token.kind == TokenKind::String) {
+    // Informal text may run over many lines: a message shows its start.
+    constexpr std::size_t kShown = 30;
+    if (token.value.size() <= kShown) return "string '" + token.value + "'";
+    return "string '" + token.value.substr(0, kShown) + "...'";
+  }
   return "'" + token.text + "'";
 }
 

@@ -16,7 +16,9 @@ enum class TokenKind : std::uint8_t {
   Word,  // a name or keyword; `lower` holds it in lower case
   Integer,
   Real,
-  String,  // `value` holds the contents
+  String,       // `value` holds the contents
+  BitString,    // '0101'B: `value` holds the digits
+  OctetString,  // '0A'H: `value` holds the hexadecimal digits
   LParen,
   RParen,
   LBrace,

@@ -139,6 +139,10 @@ Expr Parser::parse_primary(bool allow_choice) {
       return make(Expr::Kind::Real, where, take().text);
     case TokenKind::String:
       return make(Expr::Kind::String, where, take().value);
+    case TokenKind::BitString:
+      return make(Expr::Kind::BitString, where, take().value);
+    case TokenKind::OctetString:
+      return make(Expr::Kind::OctetString, where, take().value);
     case TokenKind::LParen: {
       Nesting nesting(*this);
       take();
