@@ -298,9 +298,11 @@ TEST(SdlStructure, KeywordsAreCaseInsensitiveNamesKeepTheirSpelling) {
 TEST(SdlStructure, CommentsAreSkipped) {
   const SdlFile file = read_ok(
       "/* CIF PROCESS (1, 2) */ process p; -- a line comment\n"
+      "-- ends at the next -- dcl x T; -- rest of the line\n"
       "/* multi\nline */ start; nextstate s; endprocess;");
   ASSERT_EQ(file.processes.size(), 1u);
-  EXPECT_EQ(file.processes[0].body.starts.at(0).at.line, 3u);
+  EXPECT_EQ(file.processes[0].body.variables.size(), 1u);
+  EXPECT_EQ(file.processes[0].body.starts.at(0).at.line, 4u);
   EXPECT_EQ(file.processes[0].body.starts.at(0).at.column, 9u);
 }
 

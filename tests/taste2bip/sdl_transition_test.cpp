@@ -178,6 +178,8 @@ TEST(SdlExpression, Literals) {
   EXPECT_EQ(expression("hello"), "hello");
   EXPECT_EQ(expression("'0101'B"), "'0101'B");
   EXPECT_EQ(expression("'0aFF'h"), "'0aFF'H");
+  EXPECT_EQ(expression("\"01 10\"B"), "'0110'B");
+  EXPECT_EQ(expression("\"0A\"H"), "'0A'H");
   EXPECT_EQ(expression("'xyz' // 'ab'"), "(// 'xyz' 'ab')");
 }
 
@@ -189,6 +191,7 @@ TEST(SdlExpression, Precedence) {
   EXPECT_EQ(expression("a or b xor c"), "(xor (or a b) c)");
   EXPECT_EQ(expression("a and then b or else c"), "(or else (and then a b) c)");
   EXPECT_EQ(expression("a implies b or c"), "(implies a (or b c))");
+  EXPECT_EQ(expression("a => b => c"), "(implies (implies a b) c)");
   EXPECT_EQ(expression("x < 1 and y <= 2 and z > 3 and w >= 4"),
             "(and (and (and (< x 1) (<= y 2)) (> z 3)) (>= w 4))");
   EXPECT_EQ(expression("n in {1, 2}"), "(in n {1, 2})");

@@ -75,7 +75,14 @@ class Scanner {
         advance();
         advance();
       } else if (c == '-' && peek(1) == '-') {
-        while (!at_end() && peek() != '\n') advance();
+        // As in OpenGEODE's grammar, a `--` comment ends at the next `--` or at the line's end.
+        advance();
+        advance();
+        while (!at_end() && peek() != '\n' && !(peek() == '-' && peek(1) == '-')) advance();
+        if (!at_end() && peek() == '-') {
+          advance();
+          advance();
+        }
       } else {
         return;
       }
@@ -92,6 +99,7 @@ class Scanner {
     }
     if (is_digit(c)) return lex_number(token);
     if (c == '\'') return lex_string(token);
+    if (c == '"') return lex_quoted_bits(token);
     return lex_symbol(token);
   }
 
@@ -139,6 +147,33 @@ class Scanner {
         advance();
       }
     }
+    return true;
+  }
+
+  // OpenGEODE's bit and octet strings in double quotes: "0101"B, "0A"H (blanks allowed).
+  bool lex_quoted_bits(Token& token) {
+    const bipc::Location start = here();
+    advance();
+    while (!at_end() && peek() != '"') {
+      const char c = peek();
+      if (c != ' ' && c != '\t' && c != '\r' && c != '\n') token.value.push_back(c);
+      advance();
+    }
+    if (at_end()) {
+      errors_.error(start, "unterminated string: expected a closing '\"' before end of file");
+      errors_.set_ran_off_end();
+      return false;
+    }
+    advance();
+    const char suffix = static_cast<char>(std::toupper(static_cast<unsigned char>(peek())));
+    const std::string_view digits = suffix == 'B' ? "01" : "0123456789abcdefABCDEF";
+    if ((suffix != 'B' && suffix != 'H') || is_word_char(peek(1)) ||
+        token.value.find_first_not_of(digits) != std::string::npos) {
+      errors_.error(start, "expected a bit string \"0101\"B or an octet string \"0A\"H");
+      return false;
+    }
+    advance();
+    token.kind = suffix == 'B' ? TokenKind::BitString : TokenKind::OctetString;
     return true;
   }
 
@@ -204,8 +239,9 @@ class Scanner {
   }
 
   static bool is_expected_start(char c) {
-    return is_word_start(c) || is_digit(c) || c == '\'' || c == ' ' || c == '\n' || c == '\t' ||
-           c == '\r' || std::string_view("(){},;:.!+-*/=<>").find(c) != std::string_view::npos;
+    return is_word_start(c) || is_digit(c) || c == '\'' || c == '"' || c == ' ' || c == '\n' ||
+           c == '\t' || c == '\r' ||
+           std::string_view("(){},;:.!+-*/=<>").find(c) != std::string_view::npos;
   }
 
   std::string_view text_;

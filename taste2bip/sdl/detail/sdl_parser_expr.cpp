@@ -34,7 +34,7 @@ Expr Parser::parse_binary(int level) {
     const bool word = token.kind == TokenKind::Word;
     switch (level) {
       case 0:
-        if (word && w == "implies") op = Operator::Implies;
+        if ((word && w == "implies") || token.kind == TokenKind::Arrow) op = Operator::Implies;
         break;
       case 1:
         if (word && w == "or") {
