@@ -133,7 +133,7 @@ struct OutputSignal {
 
 struct Action {
   enum class Kind : std::uint8_t {
-    Task,       // task
+    Task,       // task (also a bare assignment, informal text or for loop: OpenGEODE's task_body)
     Output,     // outputs, optional to, via
     Call,       // name, arguments (set_timer, reset_timer, writeln... are calls too)
     Decision,   // decision
@@ -166,7 +166,8 @@ struct InputSignal {
 /// `input sig(p), other;` or `input *;`, and the transition it fires.
 struct Input {
   bool is_any = false;
-  std::vector<InputSignal> signals;
+  std::vector<InputSignal> signals;  // `input none;` (a spontaneous transition) reads as `none`
+  std::optional<Expr> enabling;      // `input sig; provided expr;`: the enabling condition
   Transition transition;
   Location at;
 };
@@ -181,7 +182,7 @@ struct ContinuousSignal {
 
 /// `connect [exits];` in a state with a substructure: the transition taken on leaving it.
 struct ExitConnection {
-  std::vector<std::string> exit_points;  // empty: the default exit (`connect ;`)
+  std::vector<std::string> exit_points;  // empty: the default exit (`connect ;`); `*`: any
   Transition transition;
   Location at;
 };
@@ -275,7 +276,8 @@ struct CompositeState {
 struct Process {
   std::string name;
   bool is_type = false;
-  std::string instance_of;  // `process P : T;`
+  std::string instance_of;                                   // `process P : T;`
+  std::optional<Expr> initial_instances, maximum_instances;  // `process P(1, 1);`
   bool is_referenced = false;
   Body body;
   Location at;

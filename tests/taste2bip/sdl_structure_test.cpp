@@ -306,5 +306,41 @@ TEST(SdlStructure, CommentsAreSkipped) {
   EXPECT_EQ(file.processes[0].body.starts.at(0).at.column, 9u);
 }
 
+TEST(SdlStructure, InputsWithEnablingConditionsAndSpontaneousTransitions) {
+  const SdlFile file = read_ok(R"(process p(1, 2);
+  state S;
+    input go(x);
+    provided x > 0;
+      nextstate -;
+    input none;
+      nextstate T;
+    provided ready;
+      stop;
+  endstate;
+  state T;
+    connect *;
+      nextstate S;
+  endstate;
+endprocess p;
+)");
+  ASSERT_EQ(file.processes.size(), 1u);
+  const Process& process = file.processes[0];
+  ASSERT_TRUE(process.initial_instances.has_value());
+  ASSERT_TRUE(process.maximum_instances.has_value());
+  EXPECT_EQ(show(*process.initial_instances), "1");
+  EXPECT_EQ(show(*process.maximum_instances), "2");
+  const State& s = process.body.states.at(0);
+  ASSERT_EQ(s.inputs.size(), 2u);
+  ASSERT_TRUE(s.inputs[0].enabling.has_value());
+  EXPECT_EQ(show(*s.inputs[0].enabling), "(> x 0)");
+  EXPECT_EQ(s.inputs[0].transition.actions.at(0).name, "-");
+  EXPECT_EQ(s.inputs[1].signals.at(0).name, "none");
+  EXPECT_FALSE(s.inputs[1].enabling.has_value());
+  ASSERT_EQ(s.continuous.size(), 1u);
+  EXPECT_EQ(show(s.continuous[0].condition), "ready");
+  const State& t = process.body.states.at(1);
+  EXPECT_EQ(t.connections.at(0).exit_points, (std::vector<std::string>{"*"}));
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::sdl

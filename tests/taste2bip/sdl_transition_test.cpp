@@ -142,6 +142,7 @@ TEST(SdlTransition, LabelsJoinsAndTerminators) {
 TEST(SdlTransition, ForLoops) {
   const SdlFile file = read_ok(in_transition(R"(task for x in range(4, 10, 2):
    n := n + x mod 255
+   n := n * 2
 endfor;
 task for x in seq1:
   call writeln(x);
@@ -154,7 +155,7 @@ nextstate -;)"));
   const ForLoop& range = actions[0].task[0].loop.at(0);
   EXPECT_EQ(range.variable, "x");
   EXPECT_EQ(show(range.iterable), "(call range 4 10 2)");
-  ASSERT_EQ(range.body.actions.size(), 1u);
+  ASSERT_EQ(range.body.actions.size(), 2u);
   EXPECT_EQ(range.body.actions[0].kind, Action::Kind::Task);
   EXPECT_EQ(show(range.body.actions[0].task.at(0).value), "(+ n (mod x 255))");
   ASSERT_EQ(actions[1].task.size(), 2u);
@@ -229,6 +230,20 @@ TEST(SdlExpression, Locations) {
   EXPECT_EQ(sum.operands.at(1).at.line, 5u);
   EXPECT_EQ(sum.operands.at(1).at.column, 3u);  // a call sits where its callee starts
   EXPECT_EQ(sum.operands.at(0).at.column, 11u);
+}
+
+TEST(SdlTransition, TaskBodiesWithoutTheTaskKeyword) {
+  const SdlFile file = read_ok(in_transition(
+      "x := 1, y := 2;\na(1)!b := 3;\n'informal';\nfor i in range(3): call f(i); endfor;\n"
+      "task;\nnextstate -;"));
+  const auto& actions = transition_of(file);
+  ASSERT_EQ(actions.size(), 6u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(actions[i].kind, Action::Kind::Task) << i;
+  EXPECT_EQ(actions[0].task.size(), 2u);
+  EXPECT_EQ(show(actions[1].task.at(0).target), "(call a 1).b");
+  EXPECT_EQ(actions[2].task.at(0).kind, TaskElement::Kind::Informal);
+  EXPECT_EQ(actions[3].task.at(0).kind, TaskElement::Kind::ForLoop);
+  EXPECT_TRUE(actions[4].task.empty());
 }
 
 }  // namespace

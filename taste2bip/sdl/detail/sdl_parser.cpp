@@ -482,6 +482,13 @@ Process Parser::parse_process() {
   process.at = take().at;
   process.is_type = accept_word("type");
   if (auto name = expect_name("a process name after 'process'")) process.name = *name;
+  if (accept(TokenKind::LParen)) {  // number of instances: (initial, maximum)
+    process.initial_instances = parse_expression();
+    if (expect(TokenKind::Comma, "between the initial and maximum numbers of instances")) {
+      process.maximum_instances = parse_expression();
+    }
+    expect(TokenKind::RParen, "closing the numbers of instances");
+  }
   if (accept(TokenKind::Colon)) {
     if (auto type = expect_name("a process type name after ':'")) process.instance_of = *type;
   }

@@ -119,6 +119,7 @@ class Parser {
   std::size_t pos_ = 0;
   std::size_t depth_ = 0;
   bool stopped_ = false;
+  std::size_t for_loops_ = 0;  // how many for loop bodies enclose the current position
 };
 
 /// Whether `lower` is a keyword of SDL-PR that cannot name anything.

@@ -115,6 +115,12 @@ Input Parser::parse_input() {
   end_statement(input.is_any            ? std::string("'input *'")
                 : input.signals.empty() ? std::string("'input'")
                                         : "'input " + input.signals.front().name + "'");
+  // As in OpenGEODE's grammar, a 'provided' right after an input is its enabling condition.
+  if (accept_word("provided")) {
+    input.enabling = parse_expression();
+    parse_comment();
+    end_statement("the enabling condition of 'input'");
+  }
   input.transition = parse_transition();
   return input;
 }
@@ -136,7 +142,9 @@ ContinuousSignal Parser::parse_continuous_signal() {
 ExitConnection Parser::parse_exit_connection() {
   ExitConnection connection;
   connection.at = take().at;
-  if (at_name()) {
+  if (accept(TokenKind::Star)) {
+    connection.exit_points.push_back("*");
+  } else if (at_name()) {
     do {
       if (auto name = expect_name("an exit point name after 'connect'")) {
         connection.exit_points.push_back(*name);

@@ -6,6 +6,7 @@ namespace smcbip::taste2bip::sdl::detail {
 
 bool Parser::at_action_start() const {
   const Token& token = peek();
+  if (token.kind == TokenKind::String) return true;  // informal text without 'task'
   if (token.kind != TokenKind::Word) return false;
   const std::string& w = token.lower;
   if (w == "task" || w == "output" || w == "call" || w == "decision" || w == "join" ||
@@ -13,7 +14,12 @@ bool Parser::at_action_start() const {
     return true;
   }
   if ((w == "set" || w == "reset") && at(TokenKind::LParen, 1)) return true;
-  return at_name() && at(TokenKind::Colon, 1);  // a label
+  if (w == "for") return true;  // a task body without 'task'
+  if (!at_name()) return false;
+  // A label, or an assignment without 'task' (`x := 1`, `a(1)!b := 2`).
+  const TokenKind next = peek(1).kind;
+  return next == TokenKind::Colon || next == TokenKind::Assign || next == TokenKind::LParen ||
+         next == TokenKind::Dot || next == TokenKind::Bang;
 }
 
 Transition Parser::parse_transition() {
@@ -42,17 +48,16 @@ Action Parser::parse_action() {
   Action action;
   action.at = peek().at;
   const std::string word = peek().lower;
-  if (at(TokenKind::Colon, 1)) {
+  if (at_name() && at(TokenKind::Colon, 1)) {
     action.kind = Action::Kind::Label;
     action.name = take().text;
     take();
     return action;
   }
-  if (word == "task") {
-    parse_task(action);
-  } else if (word == "output") {
+  const bool timer_statement = (word == "set" || word == "reset") && at(TokenKind::LParen, 1);
+  if (word == "output") {
     parse_output(action);
-  } else if (word == "call" || word == "set" || word == "reset") {
+  } else if (word == "call" || timer_statement) {
     parse_call(action);
   } else if (word == "decision") {
     parse_decision(action);
@@ -80,7 +85,9 @@ Action Parser::parse_action() {
     action.kind = Action::Kind::Stop;
     action.comment = parse_comment();
     end_statement("'stop'");
-  } else {  // return
+  } else if (word != "return") {
+    parse_task(action);  // with 'task' or without (a bare assignment, informal text or loop)
+  } else {
     take();
     action.kind = Action::Kind::Return;
     if (!at(TokenKind::Semicolon) && !at_word("comment")) action.value = parse_expression();
@@ -91,8 +98,13 @@ Action Parser::parse_action() {
 }
 
 void Parser::parse_task(Action& action) {
-  take();
+  if (at_word("task")) take();
   action.kind = Action::Kind::Task;
+  if (at(TokenKind::Semicolon) || at_word("comment")) {  // an empty task
+    action.comment = parse_comment();
+    end_statement("'task'");
+    return;
+  }
   do {
     TaskElement element;
     element.at = peek().at;
@@ -120,7 +132,12 @@ void Parser::parse_task(Action& action) {
     action.task.push_back(std::move(element));
   } while (accept(TokenKind::Comma));
   action.comment = parse_comment();
-  end_statement("'task'");
+  // In a for loop's body, OpenGEODE's inputs write assignments one a line without ';'.
+  if (for_loops_ > 0) {
+    accept(TokenKind::Semicolon);
+  } else {
+    end_statement("'task'");
+  }
 }
 
 ForLoop Parser::parse_for_loop() {
@@ -131,36 +148,9 @@ ForLoop Parser::parse_for_loop() {
   expect_word("in", "after 'for " + loop.variable + "'");
   loop.iterable = parse_postfix(false);
   expect(TokenKind::Colon, "after the range of 'for " + loop.variable + "'");
-  loop.body.at = peek().at;
-  while (!at_eof() && !at_word("endfor")) {
-    if (at_action_start() && !(at_name() && at(TokenKind::Assign, 1))) {
-      loop.body.actions.push_back(parse_action());
-      continue;
-    }
-    if (!at_name()) {
-      error_here("expected an action, an assignment or 'endfor' in 'for " + loop.variable +
-                 "', got " + describe(peek()));
-      skip_past_semicolon();
-      return loop;
-    }
-    // A bare assignment list reads as a task.
-    Action task;
-    task.kind = Action::Kind::Task;
-    task.at = peek().at;
-    do {
-      TaskElement element;
-      element.at = peek().at;
-      element.target = parse_postfix(false);
-      if (!expect(TokenKind::Assign, "in an assignment")) {
-        skip_past_semicolon();
-        return loop;
-      }
-      element.value = parse_expression();
-      task.task.push_back(std::move(element));
-    } while (accept(TokenKind::Comma));
-    accept(TokenKind::Semicolon);
-    loop.body.actions.push_back(std::move(task));
-  }
+  ++for_loops_;
+  loop.body = parse_transition();
+  --for_loops_;
   expect_word("endfor", "closing 'for " + loop.variable + "'");
   return loop;
 }
