@@ -2,6 +2,7 @@
 list(APPEND TASTE2BIP_SOURCES
   sdl/detail/sdl_lexer.cpp
   sdl/detail/sdl_parser.cpp
+  sdl/detail/sdl_parser_tokens.cpp
   sdl/detail/sdl_parser_state.cpp
   sdl/detail/sdl_parser_transition.cpp
   sdl/detail/sdl_parser_expr.cpp)
