@@ -299,6 +299,7 @@ struct Path {
 /// A channel (between blocks and env) or a signal route (inside a block).
 struct Channel {
   std::string name;
+  bool no_delay = false;  // `channel c nodelay`
   std::vector<Path> paths;
   Location at;
 };

@@ -160,5 +160,13 @@ TEST(SdlRobustness, NestingWithinTheLimitReads) {
   EXPECT_EQ(error_count(text), 0u);
 }
 
+TEST(SdlErrors, ColumnsCountAUtf8CharacterOnce) {
+  EXPECT_EQ(read_errors("process p; task 'é' # ;"),
+            "test.pr:1:21: error: unexpected character '#' (not part of SDL-PR)\n"
+            "test.pr:1:12: error: expected 'dcl', 'timer', 'procedure', 'start', 'state', "
+            "'connection' or 'endprocess', got 'task'\n"
+            "test.pr:1:24: error: expected 'endprocess' closing process p, got end of file\n");
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::sdl

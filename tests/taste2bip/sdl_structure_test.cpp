@@ -342,5 +342,24 @@ endprocess p;
   EXPECT_EQ(t.connections.at(0).exit_points, (std::vector<std::string>{"*"}));
 }
 
+TEST(SdlStructure, ChannelWithoutDelayAndNestedBlocks) {
+  const SdlFile file = read_ok(R"(system s;
+  channel c nodelay from env to b with x; endchannel c;
+  block b;
+    signal inner;
+    block b2 referenced;
+    procedure q; external;
+  endblock b;
+endsystem s;
+)");
+  const System& system = file.systems.at(0);
+  EXPECT_TRUE(system.channels.at(0).no_delay);
+  const Block& block = system.blocks.at(0);
+  EXPECT_EQ(block.signals.at(0).name, "inner");
+  ASSERT_EQ(block.blocks.size(), 1u);
+  EXPECT_TRUE(block.blocks[0].is_referenced);
+  EXPECT_TRUE(block.procedures.at(0).is_external);
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::sdl

@@ -110,7 +110,7 @@ Channel Parser::parse_channel(bool is_route) {
   channel.at = take().at;
   const std::string keyword = is_route ? "signalroute" : "channel";
   if (auto name = expect_name("a " + keyword + " name")) channel.name = *name;
-  accept_word("nodelay");
+  channel.no_delay = accept_word("nodelay");
   while (at_word("from")) {
     Path path;
     path.at = take().at;
