@@ -218,6 +218,7 @@ TEST(SdlExpression, Asn1Values) {
   EXPECT_EQ(expression("{ {x 4}, {x 5} }"), "{{x 4}, {x 5}}");
   EXPECT_EQ(expression("b:{a 33, b you}"), "b:{a 33, b you}");
   EXPECT_EQ(expression("B:C:TRUE"), "B:C:true");
+  EXPECT_EQ(expression("{a call f(1), b not c}"), "{a (pcall f 1), b (not c)}");
   EXPECT_EQ(expression("{mantissa 1, base 2, exponent -5}"),
             "{mantissa 1, base 2, exponent (- 5)}");
 }

@@ -196,8 +196,8 @@ Expr Parser::parse_sequence_value() {
           next.kind == TokenKind::Integer || next.kind == TokenKind::Real ||
           next.kind == TokenKind::String || next.kind == TokenKind::LBrace ||
           next.kind == TokenKind::Minus ||
-          (next.kind == TokenKind::Word &&
-           (!is_reserved(next.lower) || next.lower == "if" || next.lower == "not"));
+          (next.kind == TokenKind::Word && (!is_reserved(next.lower) || next.lower == "if" ||
+                                            next.lower == "not" || next.lower == "call"));
       if (value_follows) field = take().text;
     }
     sequence.field_names.push_back(std::move(field));
