@@ -1,25 +1,25 @@
-// Every SDL-PR file of the shared TASTE designs (ESROCOS, OpenGEODE's test suite, kazoo, SAMV71)
-// reads without diagnostics.
+// The SDL reader on the shared TASTE designs (ESROCOS, OpenGEODE's test suite, kazoo, SAMV71):
+// every .pr file reads without diagnostics, each construct keyword becomes a node, and mutants of
+// the files read with bounded errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "taste2bip/sdl/detail/sdl_lexer.h"
 #include "taste2bip/sdl/sdl_reader.h"
+#include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip::sdl {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kData = fs::path(SMCBIP_SOURCE_DIR) / ".." / "shared" / "data";
+const fs::path kData = test::shared_data_dir();
 
 std::vector<fs::path> pr_files() {
   std::vector<fs::path> files;
@@ -31,15 +31,10 @@ std::vector<fs::path> pr_files() {
   return files;
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string slurp(const fs::path& path) { return test::file_text(path); }
 
 TEST(SdlRealFiles, EveryPrFileReadsWithoutErrors) {
-  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   const std::vector<fs::path> files = pr_files();
   EXPECT_EQ(files.size(), 57u);
   for (const fs::path& path : files) {
@@ -60,7 +55,7 @@ SdlFile read_data_file(const std::string& relative) {
 }
 
 TEST(SdlRealFiles, NestedStatesOfOpenGeodeTestNextstate) {
-  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   const SdlFile file = read_data_file("taste/esa-opengeode-testsuite/test-nextstate/og.pr");
   ASSERT_EQ(file.systems.size(), 1u);
   const System& system = file.systems[0];
@@ -90,7 +85,7 @@ TEST(SdlRealFiles, NestedStatesOfOpenGeodeTestNextstate) {
 }
 
 TEST(SdlRealFiles, KazooOrchestratorTaskOfAsn1Values) {
-  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   const SdlFile file = read_data_file(
       "taste/esa-kazoo/memoryscrub-opengeode/work/orchestrator/SDL/src/"
       "orchestrator.pr");
@@ -107,7 +102,7 @@ TEST(SdlRealFiles, KazooOrchestratorTaskOfAsn1Values) {
 // Mutated real files (bytes dropped, duplicated or swapped) read with bounded errors: the
 // recovery paths of every construct get exercised on realistic text.
 TEST(SdlRealFiles, MutatedFilesReadWithBoundedErrors) {
-  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   std::mt19937 rng(42);  // fixed seed: the same mutants every run
   for (const fs::path& path : pr_files()) {
     const std::string original = slurp(path);
@@ -267,7 +262,7 @@ class KeywordCounter {
 };
 
 TEST(SdlRealFiles, EveryKeywordOfTheFileIsANodeOfTheTree) {
-  if (!fs::is_directory(kData)) GTEST_SKIP() << "no shared TASTE data beside the source tree";
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   static const char* const kKeywords[] = {
       "process", "procedure", "start",   "connection", "state", "substructure",
       "input",   "provided",  "connect", "task",       "for",   "output",
