@@ -3,6 +3,8 @@
 
 #include <cctype>
 
+#include "taste2bip/detail/text_cursor.h"
+
 namespace smcbip::taste2bip::sdl::detail {
 
 void ErrorBudget::error(bipc::Location at, std::string message) {
@@ -18,10 +20,10 @@ bool is_word_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) 
 bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-class Scanner {
+class Scanner : public taste2bip::detail::TextCursor {
  public:
   Scanner(std::string_view text, std::uint32_t file, ErrorBudget& errors)
-      : text_(text), file_(file), errors_(errors) {
+      : TextCursor(text, file), errors_(errors) {
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
   }
 
@@ -44,18 +46,7 @@ class Scanner {
   }
 
  private:
-  char peek(std::size_t k = 0) const { return pos_ + k < text_.size() ? text_[pos_ + k] : '\0'; }
   bool at_end() const { return pos_ >= text_.size(); }
-  bipc::Location here() const { return {file_, line_, column_}; }
-  void advance() {
-    const char c = text_[pos_++];
-    if (c == '\n') {
-      ++line_;
-      column_ = 1;
-    } else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) {
-      ++column_;  // a UTF-8 continuation byte shares its sequence's column
-    }
-  }
 
   void skip_blanks_and_comments() {
     while (!at_end()) {
@@ -244,12 +235,7 @@ class Scanner {
            std::string_view("(){},;:.!+-*/=<>").find(c) != std::string_view::npos;
   }
 
-  std::string_view text_;
-  std::uint32_t file_;
   ErrorBudget& errors_;
-  std::size_t pos_ = 0;
-  std::uint32_t line_ = 1;
-  std::uint32_t column_ = 1;
 };
 
 }  // namespace

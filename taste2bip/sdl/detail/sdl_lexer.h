@@ -69,7 +69,9 @@ class ErrorBudget {
   bool ran_off_end_ = false;
 };
 
-/// Lexes the whole text; the last token is EndOfFile. Stops early once the budget is exhausted.
+/// Lexes the whole text; the last token is EndOfFile. Columns count bytes, as in every reader of
+/// taste2bip (detail/text_cursor.h); a leading UTF-8 byte order mark is skipped. Stops early once
+/// the budget is exhausted.
 std::vector<Token> lex_sdl(std::string_view text, std::uint32_t file, ErrorBudget& errors);
 
 /// How a token is named in a message: `';'`, `'state'`, `end of file`.
