@@ -68,6 +68,7 @@ TEST(SdlErrors, TopLevel) {
 std::size_t error_count(const std::string& text) {
   bipc::Diagnostics diags;
   read_sdl(text, 0, diags);
+  testing::expect_located_within(diags, text);
   return diags.error_count();
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sdl_test_support.h"
 #include "taste2bip/sdl/detail/sdl_lexer.h"
 #include "taste2bip/sdl/sdl_reader.h"
 #include "tests/taste2bip/shared_data.h"
@@ -128,6 +129,7 @@ TEST(SdlRealFiles, MutatedFilesReadWithBoundedErrors) {
       bipc::Diagnostics diags;
       read_sdl(text, 0, diags);
       EXPECT_LE(diags.error_count(), 20u) << path;
+      testing::expect_located_within(diags, text);
     }
   }
 }

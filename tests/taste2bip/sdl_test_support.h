@@ -28,6 +28,18 @@ inline std::string read_errors(const std::string& text) {
   return diags.format(sources);
 }
 
+/// Every diagnostic lies within `text` (its end included): line and column from 1, the line at
+/// most the text's line count, the column at most one past its size.
+inline void expect_located_within(const bipc::Diagnostics& diags, const std::string& text) {
+  std::size_t lines = 1;
+  for (char c : text) lines += c == '\n' ? 1 : 0;
+  for (const bipc::Diagnostic& d : diags.all()) {
+    EXPECT_TRUE(d.location.line >= 1 && d.location.column >= 1 && d.location.line <= lines &&
+                d.location.column <= text.size() + 1)
+        << d.location.line << ":" << d.location.column << ": " << d.message;
+  }
+}
+
 /// An expression as a prefix form: `(+ a (* b 2))`, `(call f x)`, `{a 1, 2}`, `'s'`.
 inline std::string show(const Expr& e) {
   auto list = [&](std::string head, std::size_t from) {
