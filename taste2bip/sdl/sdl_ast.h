@@ -43,7 +43,9 @@ enum class Operator : std::uint8_t {
 /// The spelling of an operator in SDL ("/=", "and then"); empty for None.
 const char* spelling(Operator op);
 
-/// An expression. Which fields are used depends on `kind`.
+/// An expression. Which fields are used depends on `kind`. A binary expression is located at its
+/// operator, a call or field access where its callee or record starts, others at their first
+/// token. A negative literal is the negation of a positive one.
 struct Expr {
   enum class Kind : std::uint8_t {
     Integer,        // text: the digits as written
@@ -100,6 +102,7 @@ struct Answer {
   Location at;
 };
 
+/// `decision question; answers enddecision;`; an `else:` answer is the last one.
 struct Decision {
   bool is_any = false;  // `decision any;` (question unset)
   Expr question;
@@ -131,6 +134,7 @@ struct OutputSignal {
   Location at;
 };
 
+/// One action of a transition. Which fields are used depends on `kind`.
 struct Action {
   enum class Kind : std::uint8_t {
     Task,       // task (also a bare assignment, informal text or for loop: OpenGEODE's task_body)
