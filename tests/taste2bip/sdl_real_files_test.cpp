@@ -85,6 +85,39 @@ TEST(SdlRealFiles, NestedStatesOfOpenGeodeTestNextstate) {
   EXPECT_EQ(went_exits.comment, "should not be\nan infinite loop");
 }
 
+// Entry and exit points of nested states, and a nextstate through an entry point.
+TEST(SdlRealFiles, TrafficLightEntryAndExitPoints) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
+  const SdlFile file =
+      read_data_file("taste/esa-opengeode-testsuite/TrafficLight_Basic/controller.pr");
+  ASSERT_EQ(file.processes.size(), 1u);
+  const Body& body = file.processes[0].body;
+  ASSERT_EQ(body.composite_states.size(), 2u);
+  const CompositeState& green = body.composite_states[0];
+  EXPECT_EQ(green.name, "Green");
+  EXPECT_EQ(green.entry_points, (std::vector<std::string>{"short"}));
+  EXPECT_EQ(green.exit_points, (std::vector<std::string>{"Go_Orange"}));
+  ASSERT_EQ(green.body.starts.size(), 2u);
+  EXPECT_EQ(green.body.starts[1].entry_point, "short");
+  EXPECT_EQ(green.body.starts[1].transition.actions.at(0).name, "Second_Delay");
+  ASSERT_EQ(body.timers.size(), 1u);
+  EXPECT_EQ(body.timers[0].name, "clock");
+  bool via_short = false;
+  for (const State& state : body.states) {
+    for (const ExitConnection& connection : state.connections) {
+      for (const Action& action : connection.transition.actions) {
+        if (action.kind != Action::Kind::Decision) continue;
+        for (const Answer& answer : action.decision.answers) {
+          for (const Action& last : answer.transition.actions) {
+            if (last.kind == Action::Kind::NextState && last.via == "Short") via_short = true;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(via_short) << "no 'nextstate Green via Short' read";
+}
+
 TEST(SdlRealFiles, KazooOrchestratorTaskOfAsn1Values) {
   if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   const SdlFile file = read_data_file(
