@@ -49,7 +49,7 @@ const char* spelling(Operator op);
 struct Expr {
   enum class Kind : std::uint8_t {
     Integer,        // text: the digits as written
-    Real,           // text: as written (`10.0`, `1e3`)
+    Real,           // text: as written (`10.0`, `1e3`), or plus-infinity / minus-infinity
     String,         // text: contents, a doubled quote read as one
     BitString,      // `'0101'B`: text the binary digits
     OctetString,    // `'0A'H`: text the hexadecimal digits

@@ -174,6 +174,8 @@ TEST(SdlExpression, Literals) {
   EXPECT_EQ(expression("42"), "42");
   EXPECT_EQ(expression("-10.0"), "(- 10.0)");
   EXPECT_EQ(expression("1.5e3"), "1.5e3");
+  EXPECT_EQ(expression("PLUS-INFINITY"), "plus-infinity");
+  EXPECT_EQ(expression("plus - infinity"), "(- plus infinity)");
   EXPECT_EQ(expression("'text'"), "'text'");
   EXPECT_EQ(expression("TRUE"), "true");
   EXPECT_EQ(expression("hello"), "hello");

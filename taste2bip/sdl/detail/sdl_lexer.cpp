@@ -84,8 +84,20 @@ class Scanner : public taste2bip::detail::TextCursor {
   bool lex_one(Token& token) {
     const char c = peek();
     if (is_word_start(c)) {
+      const std::size_t start = pos_;
       while (is_word_char(peek())) advance();
       token.kind = TokenKind::Word;
+      // ASN.1's REAL values plus-infinity and minus-infinity are one word.
+      std::string word(text_.substr(start, pos_ - start));
+      for (char& ch : word) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if ((word == "plus" || word == "minus") && peek() == '-' &&
+          text_.substr(pos_ + 1, 8).size() == 8 && !is_word_char(peek(9))) {
+        std::string rest(text_.substr(pos_ + 1, 8));
+        for (char& ch : rest) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        if (rest == "infinity") {
+          for (int i = 0; i < 9; ++i) advance();
+        }
+      }
       return true;
     }
     if (is_digit(c)) return lex_number(token);

@@ -156,6 +156,9 @@ Expr Parser::parse_primary(bool allow_choice) {
       if (token.lower == "true" || token.lower == "false") {
         return make(Expr::Kind::Boolean, where, take().lower);
       }
+      if (token.lower == "plus-infinity" || token.lower == "minus-infinity") {
+        return make(Expr::Kind::Real, where, take().lower);
+      }
       if (token.lower == "if") return parse_conditional();
       if (token.lower == "call" && at_name(1)) {
         take();

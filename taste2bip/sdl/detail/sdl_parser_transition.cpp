@@ -189,6 +189,7 @@ void Parser::parse_output(Action& action) {
 
 void Parser::parse_call(Action& action) {
   action.kind = Action::Kind::Call;
+  const bool timer_statement = !at_word("call");
   if (accept_word("call")) {
     if (auto name = expect_name("a procedure name after 'call'")) action.name = *name;
   } else {
@@ -197,7 +198,7 @@ void Parser::parse_call(Action& action) {
   action.arguments = parse_arguments();
   if (accept_word("to")) action.to = parse_expression();
   action.comment = parse_comment();
-  end_statement("'call " + action.name + "'");
+  end_statement(timer_statement ? "'" + action.name + "(...)'" : "'call " + action.name + "'");
 }
 
 void Parser::parse_decision(Action& action) {
