@@ -6,6 +6,7 @@
 
 #include "taste2bip/asn1/data_view.h"
 #include "taste2bip/interface_view/interface_view.h"
+#include "taste2bip/sdl/sdl_reader.h"
 #include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip {
@@ -49,6 +50,14 @@ TEST(FuzzSeeds, XmlViewReadsAndFlattens) {
   ASSERT_EQ(view.connections.size(), 1u);
   EXPECT_EQ(view.connections[0].from.function, "Driver");
   EXPECT_EQ(view.connections[0].to.function, "Motors");
+}
+
+TEST(FuzzSeeds, SdlReads) {
+  bipc::Diagnostics diags;
+  const sdl::SdlFile file =
+      sdl::read_sdl(test::file_text(kSeeds / "sdl" / "controller.pr"), 0, diags);
+  EXPECT_TRUE(diags.all().empty()) << messages(diags);
+  EXPECT_EQ(file.systems.size(), 1u);
 }
 
 }  // namespace

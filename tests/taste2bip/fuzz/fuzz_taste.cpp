@@ -6,6 +6,7 @@
 
 #include "taste2bip/asn1/data_view.h"
 #include "taste2bip/interface_view/interface_view.h"
+#include "taste2bip/sdl/sdl_reader.h"
 
 namespace smcbip::taste2bip::fuzz {
 
@@ -42,6 +43,7 @@ bool reader_named(std::string_view name, Reader& out) {
   if (name == "asn1") out = Reader::Asn1;
   else if (name == "aadl") out = Reader::Aadl;
   else if (name == "xml") out = Reader::Xml;
+  else if (name == "sdl") out = Reader::Sdl;
   else return false;
   return true;
 }
@@ -61,6 +63,9 @@ void run_reader_on(Reader reader, const std::uint8_t* data, std::size_t size) {
       break;
     case Reader::Xml:
       (void)flatten(read_xml_interface_view(text, 0, diags), diags);
+      break;
+    case Reader::Sdl:
+      (void)sdl::read_sdl(text, 0, diags);
       break;
   }
   check_locations(diags, text);

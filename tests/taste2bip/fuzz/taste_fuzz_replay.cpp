@@ -1,5 +1,5 @@
 // Replays saved inputs of the taste2bip fuzzers as plain tests: `taste_fuzz_replay READER FILE...`
-// with READER one of asn1, aadl, xml.
+// with READER one of asn1, aadl, xml, sdl.
 #include <cstdint>
 #include <fstream>
 #include <iostream>
@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   using smcbip::taste2bip::fuzz::Reader;
   Reader reader{};
   if (argc < 2 || !smcbip::taste2bip::fuzz::reader_named(argv[1], reader)) {
-    std::cerr << "usage: taste_fuzz_replay asn1|aadl|xml FILE...\n";
+    std::cerr << "usage: taste_fuzz_replay asn1|aadl|xml|sdl FILE...\n";
     return 2;
   }
   for (int i = 2; i < argc; ++i) {
