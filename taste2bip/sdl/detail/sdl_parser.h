@@ -125,4 +125,7 @@ class Parser {
 /// Whether `lower` is a keyword of SDL-PR that cannot name anything.
 bool is_reserved(std::string_view lower);
 
+/// The comparison a token spells (`=`, `/=`, `<`, `<=`, `>`, `>=`), or Operator::None.
+Operator comparison_operator(TokenKind kind);
+
 }  // namespace smcbip::taste2bip::sdl::detail

@@ -51,29 +51,8 @@ Expr Parser::parse_binary(int level) {
         }
         break;
       case 3:
-        switch (token.kind) {
-          case TokenKind::Equal:
-            op = Operator::Equal;
-            break;
-          case TokenKind::NotEqual:
-            op = Operator::NotEqual;
-            break;
-          case TokenKind::Less:
-            op = Operator::Less;
-            break;
-          case TokenKind::LessEqual:
-            op = Operator::LessEqual;
-            break;
-          case TokenKind::Greater:
-            op = Operator::Greater;
-            break;
-          case TokenKind::GreaterEqual:
-            op = Operator::GreaterEqual;
-            break;
-          default:
-            if (word && w == "in") op = Operator::In;
-            break;
-        }
+        op = comparison_operator(token.kind);
+        if (op == Operator::None && word && w == "in") op = Operator::In;
         break;
       case 4:
         if (token.kind == TokenKind::Plus) op = Operator::Plus;

@@ -61,6 +61,25 @@ const char* spelling(Operator op) {
 
 namespace smcbip::taste2bip::sdl::detail {
 
+Operator comparison_operator(TokenKind kind) {
+  switch (kind) {
+    case TokenKind::Equal:
+      return Operator::Equal;
+    case TokenKind::NotEqual:
+      return Operator::NotEqual;
+    case TokenKind::Less:
+      return Operator::Less;
+    case TokenKind::LessEqual:
+      return Operator::LessEqual;
+    case TokenKind::Greater:
+      return Operator::Greater;
+    case TokenKind::GreaterEqual:
+      return Operator::GreaterEqual;
+    default:
+      return Operator::None;
+  }
+}
+
 bool is_reserved(std::string_view lower) {
   // Words that open, close or join constructs; everything else may name something.
   static constexpr std::string_view kReserved =

@@ -252,29 +252,7 @@ Answer Parser::parse_answer() {
 RangeCondition Parser::parse_range_condition() {
   RangeCondition condition;
   condition.at = peek().at;
-  Operator op = Operator::None;
-  switch (peek().kind) {
-    case TokenKind::Equal:
-      op = Operator::Equal;
-      break;
-    case TokenKind::NotEqual:
-      op = Operator::NotEqual;
-      break;
-    case TokenKind::Less:
-      op = Operator::Less;
-      break;
-    case TokenKind::LessEqual:
-      op = Operator::LessEqual;
-      break;
-    case TokenKind::Greater:
-      op = Operator::Greater;
-      break;
-    case TokenKind::GreaterEqual:
-      op = Operator::GreaterEqual;
-      break;
-    default:
-      break;
-  }
+  const Operator op = comparison_operator(peek().kind);
   if (op != Operator::None) {
     take();
     condition.kind = RangeCondition::Kind::Open;
