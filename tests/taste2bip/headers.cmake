@@ -4,6 +4,7 @@ set(TASTE2BIP_PUBLIC_HEADERS
   taste2bip/names.h
   taste2bip/asn1/data_view.h
   taste2bip/interface_view/interface_view.h
+  taste2bip/writer/wrappers.h
   taste2bip/sdl/sdl_ast.h
   taste2bip/sdl/sdl_reader.h)
 smcbip_header_check(taste2bip_header_check HEADERS ${TASTE2BIP_PUBLIC_HEADERS}

@@ -1,0 +1,1 @@
+list(APPEND TASTE2BIP_SOURCES writer/wrappers.cpp)

@@ -1,0 +1,44 @@
+// The BIP atom types that give a TASTE provided interface its timing, as the original
+// TASTE-to-BIP translation of ESROCOS does: a cyclic interface is started every period, a
+// sporadic one takes the calls into a FIFO of its queue size and starts at most once per MIAT.
+// The function's own atom sees only `start` and `done`; its deadline bounds the time between
+// them (an invariant: a late function stops time, which `timelock` shows).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace smcbip::taste2bip {
+
+/// A parameter of an interface as BIP data: its name and BIP type (`int`, `float`, an extern
+/// type's name).
+struct BipParameter {
+  std::string name;
+  std::string type;
+};
+
+/// The longest FIFO sporadic_wrapper writes: its slots are written out one by one, so the
+/// translation refuses longer queues with a located error.
+inline constexpr std::uint32_t kMaxQueueSize = 64;
+
+/// `port type NAME(T1 p1, ...)` for the parameters (none: `port type NAME()`).
+std::string port_type(const std::string& name, const std::vector<BipParameter>& parameters);
+
+/// `atom type TASTE_Cyclic(int period, int deadline, int offset)`, times in milliseconds: the
+/// first `start` at `offset`, then one every `period` after the previous start, each followed by
+/// the function's `done` within `deadline`. Its ports are of type `call_port` (no parameters).
+std::string cyclic_wrapper(const std::string& call_port);
+
+/// `atom type NAME(int miat, int deadline)`: a sporadic interface with these parameters and a
+/// FIFO of `queue_size` calls. `call` (port type `call_port`, the caller's data) enqueues, or
+/// counts the call in `dropped` when the FIFO is full; `start` offers the oldest call's data to
+/// the function when the MIAT since the previous start has passed; `done` (port type
+/// `done_port`) is the function's return, within `deadline` of its start. `queue_size` is from 1
+/// to kMaxQueueSize.
+std::string sporadic_wrapper(const std::string& name, const std::string& call_port,
+                             const std::string& done_port,
+                             const std::vector<BipParameter>& parameters,
+                             std::uint32_t queue_size);
+
+}  // namespace smcbip::taste2bip
