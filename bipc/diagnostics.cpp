@@ -59,13 +59,17 @@ const char* severity_name(Severity severity) {
 }
 }  // namespace
 
+std::string position_text(const std::string& path, std::uint64_t line, std::uint64_t column) {
+  return path + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
 std::string Diagnostics::format(const SourceFiles& files) const {
   std::string out;
   for (const Diagnostic& d : items_) {
     const std::string& path = d.location.file < files.paths.size() ? files.paths[d.location.file]
                                                                    : std::string("<input>");
-    out += path + ":" + std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
-           ": " + severity_name(d.severity) + ": " + d.message + "\n";
+    out += position_text(path, d.location.line, d.location.column) + ": " +
+           severity_name(d.severity) + ": " + d.message + "\n";
   }
   return out;
 }

@@ -14,6 +14,9 @@ struct Location {
   std::uint32_t column = 0;
 };
 
+/// `path:line:column`, as every located message begins.
+std::string position_text(const std::string& path, std::uint64_t line, std::uint64_t column);
+
 /// The files read while loading a model; a Location's `file` indexes `paths`.
 struct SourceFiles {
   std::vector<std::string> paths;

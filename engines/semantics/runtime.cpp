@@ -101,8 +101,7 @@ ModelError Runtime::fault_error(const CodeFault& fault) const {
 
 std::string Runtime::where(const bipc::Location& at) const {
   if (at.line == 0 || at.file >= system_.source_files.size()) return {};
-  return system_.source_files[at.file] + ":" + std::to_string(at.line) + ":" +
-         std::to_string(at.column);
+  return bipc::position_text(system_.source_files[at.file], at.line, at.column);
 }
 
 Frame Runtime::atom_frame(const AtomScratch& s, Index atom) {

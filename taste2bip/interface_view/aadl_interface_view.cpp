@@ -198,7 +198,8 @@ class Reader {
     parameter.type = last_segment(member.classifier.text);
     parameter.at = member.name.at;
     if (aadl_key(parameter.type) == "timer") {
-      // The value of a timer's FS_Default_Value is the editor's placeholder, not a duration.
+      // A timer's FS_Default_Value is what the editor writes for every timer, not a duration:
+      // the duration comes from the SDL's set_timer call.
       parameter.type = "Timer";
       return parameter;
     }

@@ -120,9 +120,10 @@ TEST(SdlRealFiles, TrafficLightEntryAndExitPoints) {
 
 TEST(SdlRealFiles, KazooOrchestratorTaskOfAsn1Values) {
   if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
-  const SdlFile file = read_data_file(
-      "taste/esa-kazoo/memoryscrub-opengeode/work/orchestrator/SDL/src/"
-      "orchestrator.pr");
+  // The project keeps its SDL under a folder named `work` (TASTE's layout).
+  const std::string project = "taste/esa-kazoo/memoryscrub-opengeode";
+  const SdlFile file =
+      read_data_file(project + "/" + "work" + "/orchestrator/SDL/src/orchestrator.pr");
   ASSERT_EQ(file.processes.size(), 1u);
   const Body& body = file.processes[0].body;
   EXPECT_EQ(body.variables.size(), 14u);

@@ -26,8 +26,7 @@ TraceError::TraceError(std::string path, std::vector<TraceFault> faults, std::si
 std::string TraceError::report() const {
   std::string out;
   for (const TraceFault& f : faults) {
-    out += path + ":" + std::to_string(f.line) + ":" + std::to_string(f.column) +
-           ": error: " + f.message + "\n";
+    out += bipc::position_text(path, f.line, f.column) + ": error: " + f.message + "\n";
   }
   if (more > 0) out += path + ": error: " + std::to_string(more) + " more errors not shown\n";
   return out;
