@@ -1,0 +1,4 @@
+# The translation: ASN.1 values as BIP data, function signatures, atoms and the package.
+list(APPEND TASTE2BIP_SOURCES
+  translate/bip_types.cpp
+  translate/signature.cpp)
