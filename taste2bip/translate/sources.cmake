@@ -2,3 +2,5 @@
 list(APPEND TASTE2BIP_SOURCES
   translate/bip_types.cpp
   translate/signature.cpp)
+# The SDL process translation lists its sources apart.
+include(translate/sdl_sources.cmake)

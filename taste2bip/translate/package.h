@@ -1,0 +1,52 @@
+// A whole TASTE design as BIP packages: the nominal one (root `Syst()`: an atom per function, a
+// timing wrapper per cyclic or sporadic provided interface, connectors for the calls), the
+// faulty one and the requirements one of the FDIR workflow, and the report of what was
+// translated and what was not.
+//
+// Names in the nominal package: the atom of function F is the instance `F` (type `F`); the
+// wrapper of its provided interface p the instance `F_p`; the connectors are `F_p_start`,
+// `F_p_done` (wrapper and function), `C_r_to_F_p` (caller C's required r to p).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bipc/diagnostics.h"
+#include "taste2bip/asn1/data_view.h"
+#include "taste2bip/interface_view/interface_view.h"
+#include "taste2bip/sdl/sdl_ast.h"
+
+namespace smcbip::taste2bip {
+
+/// How long a provided interface runs (TASTE's WCET bounds, in the view): not at all; any time
+/// in [low, high] (a delayable end: a choice, which simulation draws uniformly); or a draw from
+/// the uniform distribution on [low, high] (`@stochastic`).
+enum class Wcet { Zero, Interval, Uniform };
+
+struct Design {
+  InterfaceView view;  // as read: nested functions are flattened by translate
+  asn1::DataView data;  // resolved
+  std::vector<sdl::SdlFile> sdl;
+  /// Atom types written by the user for functions without SDL (function name -> the text of an
+  /// `atom type F() ... end` with the ports of signature.h), used instead of an abstract atom.
+  std::map<std::string, std::string> behaviours;
+};
+
+struct PackageOptions {
+  std::string name = "taste";  // the nominal package; `<name>_faulty`, `<name>_requirements`
+  Wcet wcet = Wcet::Zero;
+};
+
+struct Packages {
+  std::string nominal, faulty, requirements;
+  std::string report;  // lines: what became what, what was assumed, what was left out
+};
+
+/// Translates `design`. Constructs it does not translate are located errors in `diags`
+/// (nullopt then).
+std::optional<Packages> translate(const Design& design, const PackageOptions& options,
+                                  bipc::Diagnostics& diags);
+
+}  // namespace smcbip::taste2bip

@@ -1,0 +1,2 @@
+# The SDL process as a BIP atom: constructs run by the engines, and the real SDL files.
+list(APPEND TASTE2BIP_TEST_SOURCES)

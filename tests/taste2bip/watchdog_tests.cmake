@@ -1,0 +1,2 @@
+# The ESROCOS watchdog: the original BIP run here, and compared with the translation.
+list(APPEND TASTE2BIP_TEST_SOURCES)
