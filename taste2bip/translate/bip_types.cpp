@@ -79,8 +79,9 @@ class LeafCollector {
     leaves_.push_back(Leaf{suffix, type, nullptr, std::move(path)});
   }
 
-  void sequence(const asn1::Type& t, const std::string& suffix, const std::vector<std::string>& path,
-                const std::string& name, const asn1::Type* instance) {
+  void sequence(const asn1::Type& t, const std::string& suffix,
+                const std::vector<std::string>& path, const std::string& name,
+                const asn1::Type* instance) {
     for (const asn1::Component& c : t.components) {
       std::vector<std::string> inner = path;
       inner.push_back(c.name);
@@ -178,8 +179,8 @@ std::string extern_type_name(std::string_view assignment_name) {
 std::vector<std::string> extern_types_in(const std::vector<Leaf>& leaves) {
   std::vector<std::string> out;
   for (const Leaf& leaf : leaves) {
-    const bool scalar = leaf.type == "int" || leaf.type == "bool" || leaf.type == "float" ||
-                        leaf.type == "string";
+    const bool scalar =
+        leaf.type == "int" || leaf.type == "bool" || leaf.type == "float" || leaf.type == "string";
     if (!scalar && std::find(out.begin(), out.end(), leaf.type) == out.end()) {
       out.push_back(leaf.type);
     }
