@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "bipc/bipc.h"
 #include "bipc/exit_codes.h"
 #include "bipc/options.h"
 #include "bipc/output_file.h"
@@ -37,25 +36,6 @@ void parse_atoms(const std::vector<std::string>& atoms, DesignFiles& design) {
   }
 }
 
-/// The nominal package must be what bipc accepts, root Syst() included: anything else is a
-/// fault of the translation, reported with bipc's diagnostics.
-void require_bipc_accepts(const std::string& text, const std::string& name) {
-  bipc::LoadedModel model;
-  bipc::Diagnostics diags;
-  const std::uint32_t file = model.files.add(name + ".bip");
-  model.packages.push_back(bipc::parse_package(text, file, diags));
-  model.main = model.packages.back().get();
-  bool ok = !diags.has_errors() && model.main != nullptr && bipc::check(model, diags);
-  if (ok) {
-    auto root = bipc::parse_root("Syst()", model.files.add("<root>"), diags);
-    ok = root && bipc::check_root(model, *root, diags) && bipc::instantiate(model, *root, diags);
-  }
-  if (!ok) {
-    throw std::runtime_error("the BIP written for this design does not pass bipc's check:\n" +
-                             diags.format(model.files));
-  }
-}
-
 int translate_design(const Arguments& args) {
   bipc::SourceFiles files;
   bipc::Diagnostics diags;
@@ -67,7 +47,11 @@ int translate_design(const Arguments& args) {
   diags.sort_by_location();
   std::cerr << diags.format(files);
   if (!packages) return exit_codes::kInputError;
-  require_bipc_accepts(packages->nominal, args.package.name);
+  if (const std::string problems = bipc_diagnostics(packages->nominal, args.package.name);
+      !problems.empty()) {
+    throw std::runtime_error("the BIP written for this design does not pass bipc's check:\n" +
+                             problems);
+  }
 
   std::string report;
   for (const std::string& note : notes) report += note + "\n";

@@ -17,6 +17,16 @@ std::string folded(std::string_view name) {
   return out;
 }
 
+/// A field's name inside a leaf's suffix: always after a variable's name, so only its
+/// characters need mapping (a keyword such as `data` is fine there).
+std::string field_identifier(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+  }
+  return out;
+}
+
 std::string joined(const std::string& prefix, const std::string& name) {
   if (prefix.empty()) return name;
   if (name.empty()) return prefix;
@@ -85,9 +95,9 @@ class LeafCollector {
     for (const asn1::Component& c : t.components) {
       std::vector<std::string> inner = path;
       inner.push_back(c.name);
-      const std::string field = joined(suffix, bip_identifier(c.name));
+      const std::string field = joined(suffix, field_identifier(c.name));
       if (c.optional) bookkeeping(field + "_exist", "bool", inner);
-      add(c.type, field, inner, name + "_" + bip_identifier(c.name), instance);
+      add(c.type, field, inner, name + "_" + field_identifier(c.name), instance);
     }
   }
 

@@ -47,4 +47,9 @@ struct Packages {
 std::optional<Packages> translate(const Design& design, const PackageOptions& options,
                                   bipc::Diagnostics& diags);
 
+/// What bipc's front end says of the nominal package `text` (package `name`) with root `Syst()`:
+/// empty when it checks and instantiates, else its diagnostics. The translation's output must
+/// pass: anything else is a fault of the translation.
+std::string bipc_diagnostics(const std::string& text, const std::string& name);
+
 }  // namespace smcbip::taste2bip

@@ -7,6 +7,7 @@ list(APPEND TASTE2BIP_SOURCES
   translate/connect.cpp
   translate/faulty_package.cpp
   translate/package.cpp
-  translate/read_design.cpp)
+  translate/read_design.cpp
+  translate/bipc_diagnostics.cpp)
 # The SDL process translation lists its sources apart.
 include(translate/sdl_sources.cmake)
