@@ -63,7 +63,11 @@ const std::string* user_behaviour(const Design& design, const FunctionSignature&
 std::optional<AtomType> function_atom(const Design& design, const FunctionSignature& f,
                                       bipc::Diagnostics& diags) {
   if (const std::string* text = user_behaviour(design, f)) {
-    return AtomType{f.name, *text, {}, {f.name + ": the atom type given for it"}};
+    AtomType given;
+    given.name = f.name;
+    given.text = *text;
+    given.notes.push_back(f.name + ": the atom type given for it");
+    return given;
   }
   if (!same_name(f.language, "SDL")) return abstract_atom(f);
   const FoundProcess found = find_process(design.sdl, f.source->name);
@@ -153,6 +157,7 @@ std::optional<Packages> translate(const Design& design, const PackageOptions& op
     for (const std::string& t : atom->extern_types) {
       parts.extern_types.add(t, "  extern data type " + t + "\n");
     }
+    for (const std::string& f : atom->extern_functions) parts.extern_types.add(f, "  " + f + "\n");
     parts.report.push_back(f.source->name + " (" + f.language + "): atom type " + atom->name);
     for (const std::string& note : atom->notes) parts.report.push_back("  " + note);
     atoms.push_back(std::move(*atom));

@@ -138,6 +138,7 @@ std::optional<AtomType> Translator::run() {
   atom.name = function_.name;
   atom.text = text();
   atom.extern_types = extern_types_;
+  atom.extern_functions = extern_functions_;
   atom.notes = notes_;
   return atom;
 }

@@ -192,7 +192,7 @@ class Translator {
   std::vector<std::string> places_;
   std::vector<std::string> branch_ports_;
   std::size_t place_count_ = 0;
-  std::vector<std::string> notes_, extern_types_;
+  std::vector<std::string> notes_, extern_types_, extern_functions_;
   std::size_t errors_before_ = 0;
   bool quiet_ = false;
 };
