@@ -19,9 +19,9 @@ build: deps
 	cmake --preset $(PRESET)
 	cmake --build --preset $(PRESET)
 
-# The two tools alone (bipc, smcbip) and the libraries they link: what `make demo` runs, without
-# the tests, benchmarks and runtime targets that `build` makes.
-TOOL_TARGETS := bipc_tool smcbip
+# The tools alone (bipc, smcbip, taste2bip) and the libraries they link: what `make demo` runs,
+# without the tests, benchmarks and runtime targets that `build` makes.
+TOOL_TARGETS := bipc_tool smcbip taste2bip_tool
 
 tools: deps
 	cmake --preset $(PRESET)
@@ -42,6 +42,8 @@ demo: tools
 	$(BUILD_DIR)/bin/smcbip check models/channel.bip models/channel.mtl --root 'System()' --delta 0.02
 	$(BUILD_DIR)/bin/smcbip explore models/channel.bip models/channel_sweep.mtl --root 'System()' --delta 0.02 --plot $(BUILD_DIR)/channel_sweep.svg --csv $(BUILD_DIR)/channel_sweep.csv || [ $$? -eq 1 ]
 	@echo "The sweep's plot is in $(BUILD_DIR)/channel_sweep.svg"
+	$(BUILD_DIR)/bin/taste2bip models/taste/rover/interfaceview.xml -o $(BUILD_DIR)/rover_taste
+	$(BUILD_DIR)/bin/smcbip check $(BUILD_DIR)/rover_taste/taste.bip models/taste/rover/properties.mtl --root 'Syst()' --seed 1
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -LE slow -j2
