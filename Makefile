@@ -55,7 +55,7 @@ test-slow: build
 # The fuzzers, each with its seeds and dictionary. Seeds are files of the tree and what
 # tests/fuzz_seeds.sh makes of the bundled models (IR encodings, traces of short runs) in
 # build-fuzz/seeds; new inputs go to build-fuzz/corpus/<target>, never into the tree.
-FUZZ_TARGETS := bipc property trace ir cdf asn1 aadl xml sdl
+FUZZ_TARGETS := bipc property trace ir cdf asn1 aadl xml sdl sdlatom
 FUZZ_SEEDS_bipc := tests/bipc/golden/valid models
 FUZZ_SEEDS_property := build-fuzz/seeds/properties
 FUZZ_SEEDS_trace := tests/smc/golden/traces build-fuzz/seeds/traces
@@ -65,6 +65,7 @@ FUZZ_SEEDS_asn1 := tests/taste2bip/fuzz/seeds/asn1
 FUZZ_SEEDS_aadl := tests/taste2bip/fuzz/seeds/aadl
 FUZZ_SEEDS_xml := tests/taste2bip/fuzz/seeds/xml
 FUZZ_SEEDS_sdl := tests/taste2bip/fuzz/seeds/sdl
+FUZZ_SEEDS_sdlatom := tests/taste2bip/fuzz/seeds/sdlatom
 FUZZ_DICT_bipc := tests/bipc/fuzz/bip.dict
 FUZZ_DICT_property := tests/monitors/fuzz/property.dict
 FUZZ_DICT_trace := tests/monitors/fuzz/trace.dict
@@ -74,8 +75,10 @@ FUZZ_DICT_asn1 := tests/taste2bip/fuzz/asn1.dict
 FUZZ_DICT_aadl := tests/taste2bip/fuzz/aadl.dict
 FUZZ_DICT_xml := tests/taste2bip/fuzz/xml.dict
 FUZZ_DICT_sdl := tests/taste2bip/fuzz/sdl.dict
+FUZZ_DICT_sdlatom := tests/taste2bip/fuzz/sdl.dict
 # The smoke run of `make test`: under three minutes in all, 40 s for the front end, 20 s for
-# each other reader of models, properties and traces, 10 s for each reader of TASTE designs.
+# each other reader of models, properties and traces, 10 s for each reader of TASTE designs and
+# for the SDL translation.
 FUZZ_SMOKE_SECONDS_bipc := 40
 FUZZ_SMOKE_SECONDS_property := 20
 FUZZ_SMOKE_SECONDS_trace := 20
@@ -85,6 +88,7 @@ FUZZ_SMOKE_SECONDS_asn1 := 10
 FUZZ_SMOKE_SECONDS_aadl := 10
 FUZZ_SMOKE_SECONDS_xml := 10
 FUZZ_SMOKE_SECONDS_sdl := 10
+FUZZ_SMOKE_SECONDS_sdlatom := 10
 
 # $(call fuzz_run,TARGET,SECONDS): one fuzzer for SECONDS from its corpus and seeds.
 define fuzz_run

@@ -67,7 +67,9 @@ std::vector<std::string> SignalInterface::data_names(bool out) const {
   std::vector<std::string> names;
   for (const SignalParameter& p : parameters) {
     if (p.out != out) continue;
-    for (const Leaf& leaf : p.leaves) names.push_back(leaf_name(data_prefix + "_" + p.name, leaf));
+    for (const Leaf& leaf : p.leaves) {
+      names.push_back(leaf_name((data_prefix.empty() ? name : data_prefix) + "_" + p.name, leaf));
+    }
   }
   return names;
 }

@@ -40,7 +40,8 @@ struct SignalParameter {
 struct SignalInterface {
   std::string name;  // as a BIP identifier
   /// What the names of its data start with: `name`, or for a required interface named like one
-  /// of the function's provided ones, `name` + `_ri` (TASTE allows both to share a name).
+  /// of the function's provided ones, `name` + `_ri` (TASTE allows both to share a name). Empty
+  /// means `name`.
   std::string data_prefix;
   /// The kind of a provided interface; for a required one, the kind of the provided interface
   /// it is connected to (Any when it is connected to none).

@@ -40,11 +40,18 @@ void check_locations(const bipc::Diagnostics& diags, const std::string& text) {
 }  // namespace
 
 bool reader_named(std::string_view name, Reader& out) {
-  if (name == "asn1") out = Reader::Asn1;
-  else if (name == "aadl") out = Reader::Aadl;
-  else if (name == "xml") out = Reader::Xml;
-  else if (name == "sdl") out = Reader::Sdl;
-  else return false;
+  if (name == "asn1")
+    out = Reader::Asn1;
+  else if (name == "aadl")
+    out = Reader::Aadl;
+  else if (name == "xml")
+    out = Reader::Xml;
+  else if (name == "sdl")
+    out = Reader::Sdl;
+  else if (name == "sdlatom")
+    out = Reader::SdlAtom;
+  else
+    return false;
   return true;
 }
 
@@ -67,6 +74,8 @@ void run_reader_on(Reader reader, const std::uint8_t* data, std::size_t size) {
     case Reader::Sdl:
       (void)sdl::read_sdl(text, 0, diags);
       break;
+    case Reader::SdlAtom:
+      return translate_sdl_on(text);
   }
   check_locations(diags, text);
 }

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   using smcbip::taste2bip::fuzz::Reader;
   Reader reader{};
   if (argc < 2 || !smcbip::taste2bip::fuzz::reader_named(argv[1], reader)) {
-    std::cerr << "usage: taste_fuzz_replay asn1|aadl|xml|sdl FILE...\n";
+    std::cerr << "usage: taste_fuzz_replay asn1|aadl|xml|sdl|sdlatom FILE...\n";
     return 2;
   }
   for (int i = 2; i < argc; ++i) {
