@@ -92,10 +92,10 @@ void Translator::declare_procedure(const sdl::Procedure& p) {
     std::optional<Ref> ref = declare_sdl_variable(result, prefix);
     if (ref) scope[folded(p.return_name)] = Binding{*ref, 0};
   }
-  if (!p.body.procedures.empty() || !p.body.composite_states.empty() ||
-      !p.body.states.empty() || !p.body.timers.empty()) {
+  if (!p.body.procedures.empty() || !p.body.composite_states.empty() || !p.body.states.empty() ||
+      !p.body.timers.empty()) {
     error(p.at, "procedure '" + p.name +
-                           "' has states, timers or nested procedures, which are not translated");
+                    "' has states, timers or nested procedures, which are not translated");
   }
 }
 
@@ -115,6 +115,7 @@ std::optional<AtomType> Translator::run() {
   declare_variables();
   for (const auto& [name, p] : procedures_) declare_procedure(*p);
   collect_states();
+  ready_place_ = fresh("ready");  // after the states, which keep their SDL names
   label_tables_.emplace_back();
   for (const sdl::FloatingLabel& l : process_.body.labels) {
     label_tables_.back()[folded(l.name)] = LabelSite{&l.transition.actions, 0, true};
@@ -150,6 +151,7 @@ std::string Translator::text() const {
   for (const std::string& port : branch_ports_) out += "    port Port " + port + "()\n";
   std::string places;
   for (const std::string& p : places_) places += (places.empty() ? "" : ", ") + p;
+  places += (places.empty() ? "" : ", ") + ready_place_;
   if (!places.empty()) out += "    place " + places + "\n";
   out += transitions_text_;
   return out + "  end\n";

@@ -1,15 +1,47 @@
 // The steps of a transition chain as BIP transitions: every step eager, so no time passes in an
-// intermediate place unless the step waits for a synchronisation.
+// intermediate place unless the step waits for a synchronisation. While a transition runs, the
+// place of the SDL state it started in stays marked (properties see SDL states only) and the
+// `ready` place's token is taken (no other transition of the state may start):
+//   state S to intermediate I:  from S, ready  to S, I
+//   I to J:                     from I         to J
+//   I (of S) to state T:        from S, I      to T, ready
+//   state S to state T:         from S, ready  to T, ready
 #include "taste2bip/translate/detail/sdl_translator.h"
 
 namespace smcbip::taste2bip::detail {
 
+bool Translator::is_state_place(const std::string& place) const {
+  for (const auto& [name, state] : states_) {
+    if (state == place) return true;
+  }
+  return false;
+}
+
+std::string Translator::marking_from(const Step& step, const std::string& to) const {
+  if (is_state_place(step.from)) return step.from + ", " + ready_place_;
+  const auto origin = origin_of_.find(step.from);
+  const bool ends = is_state_place(to) || to == stop_place_;
+  if (ends && origin != origin_of_.end() && !origin->second.empty()) {
+    return origin->second + ", " + step.from;
+  }
+  return step.from;
+}
+
+std::string Translator::marking_to(const Step& step, const std::string& to) const {
+  if (is_state_place(to)) return to + ", " + ready_place_;
+  if (!step.initial && is_state_place(step.from) && to != stop_place_) {
+    return step.from + ", " + to;
+  }
+  return to;
+}
+
 void Translator::close(Step step, const std::string& to) {
   std::string text;
   if (step.initial) {
-    text = "    initial to " + to;
+    text = "    initial to " + marking_to(step, to);
   } else {
-    text = "    on " + step.port + " from " + step.from + " to " + to;
+    text =
+        "    on " + step.port + " from " + marking_from(step, to) + " to " + marking_to(step, to);
     if (!step.guard.empty()) text += " provided (" + step.guard + ")";
     text += " eager";
   }
@@ -33,6 +65,7 @@ std::string Translator::place(const Chain& chain) {
   } while (used_.count(name) > 0);
   reserve(name);
   places_.push_back(name);
+  origin_of_[name] = chain.origin;
   return name;
 }
 
