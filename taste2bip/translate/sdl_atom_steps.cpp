@@ -10,6 +10,16 @@
 
 namespace smcbip::taste2bip::detail {
 
+bool Translator::is_return_port(const std::string& port) const {
+  for (const SignalInterface& p : function_.provided) {
+    if (port == p.name + "_return") return true;
+  }
+  for (const SignalInterface& r : function_.required) {
+    if (r.synchronous() && port == r.name + "_result") return true;
+  }
+  return false;
+}
+
 bool Translator::is_state_place(const std::string& place) const {
   for (const auto& [name, state] : states_) {
     if (state == place) return true;
@@ -43,7 +53,9 @@ void Translator::close(Step step, const std::string& to) {
     text =
         "    on " + step.port + " from " + marking_from(step, to) + " to " + marking_to(step, to);
     if (!step.guard.empty()) text += " provided (" + step.guard + ")";
-    text += " eager";
+    // A return (or a synchronous call's result) is lazy: the interface's wrapper, which joins
+    // it, gives it its date (at once, or after the execution time of --wcet).
+    if (!is_return_port(step.port)) text += " eager";
   }
   if (!step.statements.empty()) {
     text += " do {";

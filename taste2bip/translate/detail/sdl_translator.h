@@ -197,6 +197,7 @@ class Translator {
   std::string ready_place_;
   std::map<std::string, std::string> origin_of_;
   bool is_state_place(const std::string& place) const;
+  bool is_return_port(const std::string& port) const;
   std::string marking_from(const Step& step, const std::string& to) const;
   std::string marking_to(const Step& step, const std::string& to) const;
   std::vector<std::string> notes_, extern_types_, extern_functions_;
