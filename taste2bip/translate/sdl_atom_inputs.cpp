@@ -41,7 +41,8 @@ void Translator::translate_state(const std::string& state) {
       saved.push_back(folded(n));
     }
   }
-  for (const auto& [name, h] : handled) {
+  for (const auto& [key, h] : handled) {
+    const std::string& name = key;  // clang 14 cannot capture a structured binding
     const bool known = timers_.count(name) > 0 ||
                        std::any_of(function_.provided.begin(), function_.provided.end(),
                                    [&](const SignalInterface& p) { return folded(p.name) == name; });
