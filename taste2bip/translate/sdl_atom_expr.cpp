@@ -286,4 +286,14 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
   return Scalar{equal ? "(" + text + ")" : "!(" + text + ")", "bool"};
 }
 
+std::optional<Scalar> Translator::condition(const sdl::Expr& e, const char* what) {
+  std::optional<Scalar> value = scalar(e);
+  if (value && value->kind != "bool") {
+    error(e.at, std::string(what) + " must be a boolean, not " +
+                    (value->kind.empty() ? "a value of unknown type" : "a " + value->kind));
+    return std::nullopt;
+  }
+  return value;
+}
+
 }  // namespace smcbip::taste2bip::detail

@@ -97,7 +97,7 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
     return;
   }
   if (input->enabling) {
-    std::optional<Scalar> guard = scalar(*input->enabling);
+    std::optional<Scalar> guard = condition(*input->enabling, "an enabling condition");
     if (!guard) return;
     step.guard = guard->text;
     notes_.push_back("'" + p.name + "' waits in state " + state + " while its enabling "
@@ -138,7 +138,7 @@ void Translator::continuous_transitions(const std::string& state, const std::str
   std::string higher;
   for (std::size_t k = 0; k < signals.size(); ++k) {
     const sdl::ContinuousSignal& c = *signals[k].second;
-    std::optional<Scalar> condition = scalar(c.condition);
+    std::optional<Scalar> condition = this->condition(c.condition, "a continuous signal");
     if (!condition) continue;
     const std::string guard =
         higher.empty() ? condition->text : condition->text + " && !(" + higher + ")";

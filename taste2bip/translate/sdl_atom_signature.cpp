@@ -32,8 +32,9 @@ void add_paths(const std::vector<sdl::Channel>& channels, const std::vector<std:
   auto is_end = [&](const std::string& n) {
     return std::find(ends.begin(), ends.end(), folded(n)) != ends.end();
   };
-  auto add = [](std::vector<std::string>& list, const std::string& s) {
-    if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+  auto add = [](std::vector<std::string>& list, const std::string& s) {  // SDL ignores case
+    const auto same = [&](const std::string& t) { return folded(t) == folded(s); };
+    if (std::none_of(list.begin(), list.end(), same)) list.push_back(s);
   };
   for (const sdl::Channel& c : channels) {
     for (const sdl::Path& p : c.paths) {

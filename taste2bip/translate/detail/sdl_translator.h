@@ -106,6 +106,8 @@ class Translator {
   std::optional<Scalar> scalar(const sdl::Expr& e, const asn1::Type* hint = nullptr);
   std::optional<Scalar> name_value(const sdl::Expr& e, const asn1::Type* hint);
   std::optional<Scalar> binary(const sdl::Expr& e);
+  /// `e` as a guard: a bool expression, else an error naming `what` it is the condition of.
+  std::optional<Scalar> condition(const sdl::Expr& e, const char* what);
   std::optional<Scalar> call_value(const sdl::Expr& e, const asn1::Type* hint);
   std::optional<std::int64_t> constant(const sdl::Expr& e);
   std::optional<Scalar> equality(const sdl::Expr& a, const sdl::Expr& b, bool equal,
