@@ -4,6 +4,16 @@
 
 namespace smcbip::taste2bip::detail {
 
+namespace {
+
+/// Whether BIP compares values of these kinds (unknown kinds are left to the front end).
+bool comparable(const std::string& a, const std::string& b) {
+  const auto numeric = [](const std::string& k) { return k == "int" || k == "float"; };
+  return a.empty() || b.empty() || a == b || (numeric(a) && numeric(b));
+}
+
+}  // namespace
+
 Outcome Translator::decision(const sdl::Action& a, Step step, Chain& chain) {
   const sdl::Decision& d = a.decision;
   const std::string at = place(chain);
@@ -41,6 +51,10 @@ std::optional<std::string> Translator::answer_guard(const sdl::Expr& question,
   for (const sdl::RangeCondition& c : answer.conditions) {
     std::optional<Scalar> low = scalar(c.low, hint);
     if (!low) return std::nullopt;
+    if (!comparable(q->kind, low->kind)) {
+      error(c.at, "an answer of type " + low->kind + " to a question of type " + q->kind);
+      return std::nullopt;
+    }
     std::string text;
     if (c.kind == sdl::RangeCondition::Kind::Closed) {
       std::optional<Scalar> high = scalar(c.high, hint);
