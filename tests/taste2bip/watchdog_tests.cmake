@@ -1,2 +1,2 @@
 # The ESROCOS watchdog: the original BIP run here, and compared with the translation.
-list(APPEND TASTE2BIP_TEST_SOURCES)
+list(APPEND TASTE2BIP_TEST_SOURCES watchdog_model.cpp watchdog_run_test.cpp)
