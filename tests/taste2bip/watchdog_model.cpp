@@ -193,22 +193,31 @@ engines::Externs watchdog_externs() {
   return externs;
 }
 
-std::optional<bipc::ir::System> load_watchdog_original(std::string& why) {
-  const std::string original = file_text(watchdog_original_file());
-  if (original.empty()) {
-    why = "cannot read " + watchdog_original_file().string();
-    return std::nullopt;
-  }
-  const std::optional<std::string> adapted = watchdog_adapted_text(original, why);
-  if (!adapted) return std::nullopt;
+std::optional<bipc::ir::System> load_bip_text(const std::string& text, const std::string& file_name,
+                                              const std::string& root, std::string& why) {
   const tests::TempDir dir;
-  const std::filesystem::path file = dir.write("InterfaceViewFull.bip", *adapted);
-  bipc::FrontendResult result = bipc::run_frontend({file.string(), {}, "Syst()"}, true);
+  const std::filesystem::path file = dir.write(file_name, text);
+  bipc::FrontendResult result = bipc::run_frontend({file.string(), {}, root}, true);
   if (!result.system) {
     why = result.diags.format(result.model.files);
     return std::nullopt;
   }
   return std::move(*result.system);
+}
+
+std::optional<std::string> watchdog_adapted_original(std::string& why) {
+  const std::string original = file_text(watchdog_original_file());
+  if (original.empty()) {
+    why = "cannot read " + watchdog_original_file().string();
+    return std::nullopt;
+  }
+  return watchdog_adapted_text(original, why);
+}
+
+std::optional<bipc::ir::System> load_watchdog_original(std::string& why) {
+  const std::optional<std::string> adapted = watchdog_adapted_original(why);
+  if (!adapted) return std::nullopt;
+  return load_bip_text(*adapted, "InterfaceViewFull.bip", "Syst()", why);
 }
 
 void remove_fault_transitions(bipc::ir::System& system) {

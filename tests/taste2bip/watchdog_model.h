@@ -51,6 +51,14 @@ std::optional<std::string> watchdog_adapted_text(const std::string& original, st
 /// The builtins plus the extern functions of the adapted model, as described above.
 engines::Externs watchdog_externs();
 
+/// The adapted text of the original file; nullopt (and `why` set) when unreadable.
+std::optional<std::string> watchdog_adapted_original(std::string& why);
+
+/// `text` written to a temporary `file_name` (the package's name plus .bip) and loaded through
+/// the front end with `root`; nullopt (and `why` set to the diagnostics) on failure.
+std::optional<bipc::ir::System> load_bip_text(const std::string& text, const std::string& file_name,
+                                              const std::string& root, std::string& why);
+
 /// The adapted original, through the front end, with root `Syst()`; nullopt (and `why` set,
 /// with the front end's diagnostics) on failure.
 std::optional<bipc::ir::System> load_watchdog_original(std::string& why);
