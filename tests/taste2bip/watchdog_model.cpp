@@ -178,6 +178,11 @@ std::optional<std::string> watchdog_adapted_text(const std::string& original, st
 
 engines::Externs watchdog_externs() {
   engines::Externs externs = engines::Externs::with_builtins();
+  add_watchdog_externs(externs);
+  return externs;
+}
+
+void add_watchdog_externs(engines::Externs& externs) {
   add_field(externs, "translation", &Motion2D::translation);
   add_field(externs, "rotation", &Motion2D::rotation);
   add_field(externs, "heading", &Motion2D::heading);
@@ -190,7 +195,6 @@ engines::Externs watchdog_externs() {
       [](CallContext&, std::span<const Val> a) { return handle_val(angles().handle(a[1].f)); });
   add_queue(externs);
   add_output(externs);
-  return externs;
 }
 
 std::optional<bipc::ir::System> load_bip_text(const std::string& text, const std::string& file_name,

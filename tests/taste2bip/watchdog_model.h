@@ -50,6 +50,8 @@ std::optional<std::string> watchdog_adapted_text(const std::string& original, st
 
 /// The builtins plus the extern functions of the adapted model, as described above.
 engines::Externs watchdog_externs();
+/// The same functions added to `externs` (without the builtins).
+void add_watchdog_externs(engines::Externs& externs);
 
 /// The adapted text of the original file; nullopt (and `why` set) when unreadable.
 std::optional<std::string> watchdog_adapted_original(std::string& why);
