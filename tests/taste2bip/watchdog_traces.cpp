@@ -51,7 +51,7 @@ class TraceExplorer {
     }
     std::map<Trace, Bucket> level;
     level[{}].add(runtime_->state());
-    out_.traces.insert({});
+    out_.traces.insert(Trace{});
     for (std::size_t depth = 0; depth < bounds_.events && !level.empty(); ++depth) {
       std::map<Trace, Bucket> next;
       for (auto& [trace, bucket] : level) close_and_extend(trace, bucket, next);

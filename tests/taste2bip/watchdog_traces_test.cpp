@@ -61,14 +61,14 @@ std::string adapted_original() {
 
 TEST(WatchdogTraces, TheOriginalHasTheJoystickCommandsChainOfCalls) {
   WATCHDOG_SKIP_WITHOUT_DATA();
-  // The nominal original (fault transitions removed) to k = 10 events: 21,771 traces from
+  // The nominal original (fault transitions removed) to k = 10 events: 21,772 traces from
   // 27,167 (trace, state) pairs, explored whole (each trace's silent closure within 50 steps).
   TraceBounds bounds;
   bounds.events = 10;
   bounds.silent_steps = 50;
   bounds.states = 100'000;
   const TraceSet traces = traces_of(adapted_original(), bounds, /*nominal=*/true);
-  EXPECT_EQ(traces.traces.size(), 21'771u);
+  EXPECT_EQ(traces.traces.size(), 21'772u);
   EXPECT_EQ(traces.states, 27'167u);
   // By hand from InterfaceViewFull.bip, with every call served as soon as it is made and
   // JoystickDriver's return (to Wait) left for later: the cyclic step, the command to
@@ -96,11 +96,11 @@ TEST(WatchdogTraces, TheOriginalHasTheJoystickCommandsChainOfCalls) {
 TEST(WatchdogTraces, TheLostHeartbeatReturnsJoystickDriverToWaitWithoutAStep) {
   WATCHDOG_SKIP_WITHOUT_DATA();
   TraceBounds bounds;
-  bounds.events = 6;  // 943 traces from 1,446 (trace, state) pairs
+  bounds.events = 6;  // 944 traces from 1,446 (trace, state) pairs
   const TraceSet with_fault = traces_of(adapted_original(), bounds);
   const TraceSet nominal = traces_of(adapted_original(), bounds, /*nominal=*/true);
-  EXPECT_EQ(with_fault.traces.size(), 943u);
-  EXPECT_EQ(nominal.traces.size(), 197u);
+  EXPECT_EQ(with_fault.traces.size(), 944u);
+  EXPECT_EQ(nominal.traces.size(), 198u);
   // fault1 (Wait to l5) then the silent recovery (l5 to Wait): Wait entered, no step seen.
   EXPECT_TRUE(with_fault.traces.contains(Trace{"JoystickDriver.Wait"}));
   EXPECT_FALSE(nominal.traces.contains(Trace{"JoystickDriver.Wait"}));
