@@ -86,4 +86,41 @@ bool write_file_atomically(const std::string& path, const std::string& text, std
   return true;
 }
 
+bool write_files_atomically(const std::string& folder, const std::vector<NamedText>& files,
+                            std::string& error) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) {
+    error = "cannot create the folder " + folder + ": " + ec.message();
+    return false;
+  }
+  std::vector<std::pair<std::string, std::string>> written;  // temporary, final
+  for (const NamedText& file : files) {
+    std::string path;
+    if (!output_target(folder + "/" + file.name, path, error)) {
+      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
+      return false;
+    }
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
+    if (temporary.empty()) {
+      error = "cannot write " + path;
+      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
+      return false;
+    }
+    written.emplace_back(temporary, path);
+  }
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    std::filesystem::rename(written[i].first, written[i].second, ec);
+    if (ec) {
+      error = "cannot write " + written[i].second + ": " + ec.message();
+      for (std::size_t j = i; j < written.size(); ++j) {
+        std::filesystem::remove(written[j].first, ec);
+      }
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace smcbip::bipc

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace smcbip::bipc {
 
@@ -20,5 +21,17 @@ bool output_target(const std::string& path, std::string& target, std::string& er
 /// regular file (output_target). On failure returns false, removes the temporary and explains
 /// in `error`.
 bool write_file_atomically(const std::string& path, const std::string& text, std::string& error);
+
+/// A file to write: its name relative to an output folder, and its contents.
+struct NamedText {
+  std::string name;
+  std::string text;
+};
+
+/// Writes `files` into `folder` (created if needed) so that either all are written or none:
+/// each goes to a temporary file beside its target (output_target), and the temporaries are
+/// renamed over the targets only once all are complete. False with the reason in `error`.
+bool write_files_atomically(const std::string& folder, const std::vector<NamedText>& files,
+                            std::string& error);
 
 }  // namespace smcbip::bipc

@@ -85,43 +85,6 @@ int run_ir(const FrontendOptions& options, const std::string& output, bool json_
 
 /// Writes every file into `folder` (created if needed); each goes through a temporary file, and
 /// none is renamed into place before all were written.
-bool write_files(const std::string& folder, const std::vector<codegen::GeneratedFile>& files,
-                 std::string& error) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec) {
-    error = "cannot create the folder " + folder + ": " + ec.message();
-    return false;
-  }
-  std::vector<std::pair<std::string, std::string>> written;  // temporary, final
-  for (const codegen::GeneratedFile& file : files) {
-    std::string path;
-    if (!output_target(folder + "/" + file.name, path, error)) {
-      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
-      return false;
-    }
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-    const std::string temporary = write_temporary_file(path + ".tmpXXXXXX", file.text);
-    if (temporary.empty()) {
-      error = "cannot write " + path;
-      for (const auto& [done, unused] : written) std::filesystem::remove(done, ec);
-      return false;
-    }
-    written.emplace_back(temporary, path);
-  }
-  for (std::size_t i = 0; i < written.size(); ++i) {
-    std::filesystem::rename(written[i].first, written[i].second, ec);
-    if (ec) {
-      error = "cannot write " + written[i].second + ": " + ec.message();
-      for (std::size_t j = i; j < written.size(); ++j) {
-        std::filesystem::remove(written[j].first, ec);
-      }
-      return false;
-    }
-  }
-  return true;
-}
-
 int run_hash(const FrontendOptions& options) {
   FrontendResult result = load(options, /*need_system=*/true);
   if (!report(result) || !result.system) return kInputError;
@@ -158,7 +121,9 @@ int run_gen(const FrontendOptions& options, const std::string& output,
     std::cerr << "bipc: internal error: " << untranslatable.message << "\n";
     return kInternalError;
   }
-  if (!write_files(output, files, error)) {
+  std::vector<NamedText> named;
+  for (const codegen::GeneratedFile& file : files) named.push_back({file.name, file.text});
+  if (!write_files_atomically(output, named, error)) {
     std::cerr << "bipc: error: " << error << "\n";
     return kInputError;
   }

@@ -4,4 +4,5 @@ list(APPEND TASTE2BIP_SOURCES
   asn1/parser.cpp
   asn1/parser_type.cpp
   asn1/data_view.cpp
-  asn1/resolve.cpp)
+  asn1/resolve.cpp
+  asn1/taste_basic_types.cpp)

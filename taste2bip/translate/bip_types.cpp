@@ -17,6 +17,16 @@ std::string folded(std::string_view name) {
   return out;
 }
 
+/// A field's name inside a leaf's suffix: always after a variable's name, so only its
+/// characters need mapping (a keyword such as `data` is fine there).
+std::string field_identifier(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+  }
+  return out;
+}
+
 std::string joined(const std::string& prefix, const std::string& name) {
   if (prefix.empty()) return name;
   if (name.empty()) return prefix;
@@ -79,14 +89,15 @@ class LeafCollector {
     leaves_.push_back(Leaf{suffix, type, nullptr, std::move(path)});
   }
 
-  void sequence(const asn1::Type& t, const std::string& suffix, const std::vector<std::string>& path,
-                const std::string& name, const asn1::Type* instance) {
+  void sequence(const asn1::Type& t, const std::string& suffix,
+                const std::vector<std::string>& path, const std::string& name,
+                const asn1::Type* instance) {
     for (const asn1::Component& c : t.components) {
       std::vector<std::string> inner = path;
       inner.push_back(c.name);
-      const std::string field = joined(suffix, bip_identifier(c.name));
+      const std::string field = joined(suffix, field_identifier(c.name));
       if (c.optional) bookkeeping(field + "_exist", "bool", inner);
-      add(c.type, field, inner, name + "_" + bip_identifier(c.name), instance);
+      add(c.type, field, inner, name + "_" + field_identifier(c.name), instance);
     }
   }
 
@@ -178,8 +189,8 @@ std::string extern_type_name(std::string_view assignment_name) {
 std::vector<std::string> extern_types_in(const std::vector<Leaf>& leaves) {
   std::vector<std::string> out;
   for (const Leaf& leaf : leaves) {
-    const bool scalar = leaf.type == "int" || leaf.type == "bool" || leaf.type == "float" ||
-                        leaf.type == "string";
+    const bool scalar =
+        leaf.type == "int" || leaf.type == "bool" || leaf.type == "float" || leaf.type == "string";
     if (!scalar && std::find(out.begin(), out.end(), leaf.type) == out.end()) {
       out.push_back(leaf.type);
     }

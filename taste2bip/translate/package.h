@@ -17,21 +17,19 @@
 #include "taste2bip/asn1/data_view.h"
 #include "taste2bip/interface_view/interface_view.h"
 #include "taste2bip/sdl/sdl_ast.h"
+#include "taste2bip/writer/wrappers.h"
 
 namespace smcbip::taste2bip {
 
-/// How long a provided interface runs (TASTE's WCET bounds, in the view): not at all; any time
-/// in [low, high] (a delayable end: a choice, which simulation draws uniformly); or a draw from
-/// the uniform distribution on [low, high] (`@stochastic`).
-enum class Wcet { Zero, Interval, Uniform };
-
 struct Design {
-  InterfaceView view;  // as read: nested functions are flattened by translate
+  InterfaceView view;   // as read: nested functions are flattened by translate
   asn1::DataView data;  // resolved
   std::vector<sdl::SdlFile> sdl;
   /// Atom types written by the user for functions without SDL (function name -> the text of an
   /// `atom type F() ... end` with the ports of signature.h), used instead of an abstract atom.
   std::map<std::string, std::string> behaviours;
+  /// The files the locations above index, to name them in the report (null: line:col only).
+  const bipc::SourceFiles* files = nullptr;
 };
 
 struct PackageOptions {
@@ -48,5 +46,10 @@ struct Packages {
 /// (nullopt then).
 std::optional<Packages> translate(const Design& design, const PackageOptions& options,
                                   bipc::Diagnostics& diags);
+
+/// What bipc's front end says of the nominal package `text` (package `name`) with root `Syst()`:
+/// empty when it checks and instantiates, else its diagnostics. The translation's output must
+/// pass: anything else is a fault of the translation.
+std::string bipc_diagnostics(const std::string& text, const std::string& name);
 
 }  // namespace smcbip::taste2bip

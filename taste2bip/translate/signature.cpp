@@ -26,6 +26,7 @@ SignalInterface signal_interface(const Interface& source, InterfaceKind kind,
                                  const asn1::DataView& data, bipc::Diagnostics& diags) {
   SignalInterface out;
   out.name = bip_identifier(source.name);
+  out.data_prefix = out.name;
   out.kind = kind;
   out.source = &source;
   out.at = source.at;
@@ -66,7 +67,7 @@ std::vector<std::string> SignalInterface::data_names(bool out) const {
   std::vector<std::string> names;
   for (const SignalParameter& p : parameters) {
     if (p.out != out) continue;
-    for (const Leaf& leaf : p.leaves) names.push_back(leaf_name(name + "_" + p.name, leaf));
+    for (const Leaf& leaf : p.leaves) names.push_back(leaf_name(data_prefix + "_" + p.name, leaf));
   }
   return names;
 }
@@ -93,6 +94,9 @@ FunctionSignature function_signature(const InterfaceView& view, std::size_t inde
   for (const Interface& r : f.required) {
     const InterfaceKind kind = reached_kind(view, f, r).value_or(InterfaceKind::Any);
     out.required.push_back(signal_interface(r, kind, data, diags));
+    for (const SignalInterface& p : out.provided) {
+      if (p.name == out.required.back().name) out.required.back().data_prefix += "_ri";
+    }
   }
   for (const ContextParameter& c : f.context) {
     if (c.type == "Timer") {

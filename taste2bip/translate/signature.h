@@ -9,6 +9,9 @@
 //                          export port <PT(out leaves)> r_result(r_<param>_<leaf>...) its end,
 //                          for a synchronous one (protected or unprotected) only
 //
+// (the data's names start with SignalInterface::data_prefix, which is `r_ri` for a required
+// interface named like a provided one)
+//
 // where PT is port_type_name of the leaves' types. The atom sets the out data before the port
 // fires; the connectors copy the data of the sending port into the receiving one.
 #pragma once
@@ -36,6 +39,9 @@ struct SignalParameter {
 
 struct SignalInterface {
   std::string name;  // as a BIP identifier
+  /// What the names of its data start with: `name`, or for a required interface named like one
+  /// of the function's provided ones, `name` + `_ri` (TASTE allows both to share a name).
+  std::string data_prefix;
   /// The kind of a provided interface; for a required one, the kind of the provided interface
   /// it is connected to (Any when it is connected to none).
   InterfaceKind kind = InterfaceKind::Any;
@@ -46,7 +52,7 @@ struct SignalInterface {
   bool synchronous() const {
     return kind == InterfaceKind::Protected || kind == InterfaceKind::Unprotected;
   }
-  /// The BIP data names (`<interface>_<param>_<leaf>`) and types of the in (or out) parameters.
+  /// The BIP data names (`<data_prefix>_<param>_<leaf>`) and types of the in (or out) parameters.
   std::vector<std::string> data_names(bool out) const;
   std::vector<std::string> data_types(bool out) const;
 };

@@ -30,11 +30,45 @@ std::string for_slot(const std::string& index, std::uint32_t size, Body body) {
   for (std::uint32_t slot = 0; slot < size; ++slot) {
     const bool last = slot + 1 == size;
     if (slot > 0) out += " else ";
-    out += last ? body(slot) : "if (" + index + " == " + std::to_string(slot) + ") then " +
-                                   body(slot);
+    out +=
+        last ? body(slot) : "if (" + index + " == " + std::to_string(slot) + ") then " + body(slot);
   }
   for (std::uint32_t slot = 0; slot + 1 < size; ++slot) out += " fi";
   return out;
+}
+
+std::string wcet_parameters(Wcet wcet) {
+  return wcet == Wcet::Zero ? "" : ", int wcet_low, int wcet_high";
+}
+
+/// The declaration of the `done` port: drawn uniformly on [wcet_low, wcet_high] after the start
+/// (clock t) with Wcet::Uniform.
+std::string done_port(const std::string& port_type_name, Wcet wcet) {
+  std::string out;
+  if (wcet == Wcet::Uniform) {
+    out += "    @stochastic(dist=\"uniform\", clk=t, param=\"wcet_low,wcet_high\")\n";
+  }
+  return out + "    export port " + port_type_name + " done()\n";
+}
+
+/// `done` from running to `to`: at once, or within the WCET bounds (an invariant keeps it
+/// before wcet_high).
+std::string done_transition(const std::string& to, Wcet wcet) {
+  switch (wcet) {
+    case Wcet::Zero:
+      return "    on done from running to " + to + " eager\n";
+    case Wcet::Interval:
+      return "    on done from running to " + to + " provided (t >= wcet_low) delayable\n";
+    case Wcet::Uniform:
+      break;
+  }
+  return "    on done from running to " + to + " provided (t >= wcet_low)\n";
+}
+
+/// With Wcet::Interval, `done` comes by wcet_high (invariants follow the transitions).
+std::string wcet_invariant(Wcet wcet) {
+  return wcet == Wcet::Interval ? "    invariant wcet_kept at running provided (t <= wcet_high)\n"
+                                : "";
 }
 
 }  // namespace
@@ -43,31 +77,33 @@ std::string port_type(const std::string& name, const std::vector<BipParameter>& 
   return "  port type " + name + "(" + parameter_list(parameters, true) + ")\n";
 }
 
-std::string cyclic_wrapper(const std::string& call_port) {
+std::string cyclic_wrapper(const std::string& call_port, Wcet wcet) {
   std::ostringstream out;
   out << "  // A cyclic interface: started at `offset`, then every `period` after its previous\n"
          "  // start, and done within `deadline` of each start (times in milliseconds).\n"
-         "  atom type TASTE_Cyclic(int period, int deadline, int offset)\n"
+         "  atom type TASTE_Cyclic(int period, int deadline, int offset"
+      << wcet_parameters(wcet)
+      << ")\n"
          "    clock t unit millisecond\n"
          "    export port "
-      << call_port << " start()\n    export port " << call_port
-      << " done()\n"
-         "    place waiting, running, resting\n"
+      << call_port << " start()\n"
+      << done_port(call_port, wcet)
+      << "    place waiting, running, resting\n"
          "    initial to waiting do { t = 0; }\n"
          "    on start from waiting to running provided (t >= offset) eager do { t = 0; }\n"
-         "    on done from running to resting eager\n"
-         "    on start from resting to running provided (t >= period) eager do { t = 0; }\n"
+      << done_transition("resting", wcet)
+      << "    on start from resting to running provided (t >= period) eager do { t = 0; }\n"
          "    invariant first_dispatch at waiting provided (t <= offset)\n"
          "    invariant deadline_met at running provided (t <= deadline)\n"
          "    invariant period_kept at resting provided (t <= period)\n"
-         "  end\n";
+      << wcet_invariant(wcet) << "  end\n";
   return out.str();
 }
 
 std::string sporadic_wrapper(const std::string& name, const std::string& call_port,
-                             const std::string& done_port,
-                             const std::vector<BipParameter>& parameters,
-                             std::uint32_t queue_size) {
+                             const std::string& done_port_type,
+                             const std::vector<BipParameter>& parameters, std::uint32_t queue_size,
+                             Wcet wcet) {
   const std::uint32_t n = queue_size;
   std::ostringstream out;
   out << "  // A sporadic interface with a FIFO of " << n
@@ -75,7 +111,8 @@ std::string sporadic_wrapper(const std::string& name, const std::string& call_po
          "  // the oldest call starts once `miat` has passed since the previous start, and is\n"
          "  // done within `deadline` of its start (times in milliseconds).\n"
          "  atom type "
-      << name << "(int miat, int deadline)\n    clock t unit millisecond\n";
+      << name << "(int miat, int deadline" << wcet_parameters(wcet)
+      << ")\n    clock t unit millisecond\n";
   out << "    data int count = 0\n    data int head = 0\n    data int dropped = 0\n";
   for (const BipParameter& p : parameters) {
     out << "    data " << p.type << " in_" << p.name << "\n";    // the caller's call
@@ -88,8 +125,8 @@ std::string sporadic_wrapper(const std::string& name, const std::string& call_po
       << ")\n";
   out << "    export port " << call_port << " start(" << parameter_list(parameters, false, "next_")
       << ")\n";
-  out << "    export port " << done_port << " done()\n";
-  out << "    port " << done_port << " rest()\n";
+  out << done_port(done_port_type, wcet);
+  out << "    port " << done_port_type << " rest()\n";
   out << "    place idle, running, resting\n";
   out << "    initial to idle do { t = 0; }\n";
 
@@ -111,8 +148,7 @@ std::string sporadic_wrapper(const std::string& name, const std::string& call_po
   }
 
   // Dequeue: the next call becomes the one after it, if any.
-  std::string dequeue = "t = 0; head = (head + 1) % " + std::to_string(n) +
-                        "; count = count - 1;";
+  std::string dequeue = "t = 0; head = (head + 1) % " + std::to_string(n) + "; count = count - 1;";
   if (!parameters.empty()) {
     dequeue += " if (count > 0) then ";
     dequeue += for_slot("head", n, [&](std::uint32_t slot) {
@@ -125,10 +161,32 @@ std::string sporadic_wrapper(const std::string& name, const std::string& call_po
     dequeue += " fi";
   }
   out << "    on start from idle to running provided (count > 0) eager do { " << dequeue << " }\n";
-  out << "    on done from running to resting eager\n";
+  out << done_transition("resting", wcet);
   out << "    on rest from resting to idle provided (t >= miat) eager\n";
   out << "    invariant deadline_met at running provided (t <= deadline)\n";
-  out << "  end\n";
+  out << wcet_invariant(wcet) << "  end\n";
+  return out.str();
+}
+
+}  // namespace smcbip::taste2bip
+
+namespace smcbip::taste2bip {
+
+std::string synchronous_wrapper(const std::string& call_port, Wcet wcet) {
+  std::ostringstream out;
+  out << "  // The execution time of a protected or unprotected interface, in its caller's "
+         "thread.\n"
+         "  atom type TASTE_Synchronous("
+      << (wcet == Wcet::Zero ? "" : "int wcet_low, int wcet_high")
+      << ")\n"
+         "    clock t unit millisecond\n"
+         "    export port "
+      << call_port << " start()\n"
+      << done_port(call_port, wcet)
+      << "    place idle, running\n"
+         "    initial to idle\n"
+         "    on start from idle to running eager do { t = 0; }\n"
+      << done_transition("idle", wcet) << wcet_invariant(wcet) << "  end\n";
   return out.str();
 }
 

@@ -11,6 +11,13 @@
 
 namespace smcbip::taste2bip {
 
+/// How long a provided interface runs, between its `start` and its `done` (TASTE's WCET bounds,
+/// in the view): no time; any time in [low, high] (a delayable `done`: a choice, which
+/// simulation plans uniformly); or a draw from the uniform distribution on [low, high]
+/// (`@stochastic` on `done`). With Interval and Uniform the wrapper types take two more
+/// parameters, `int wcet_low, int wcet_high`.
+enum class Wcet { Zero, Interval, Uniform };
+
 /// A parameter of an interface as BIP data: its name and BIP type (`int`, `float`, an extern
 /// type's name).
 struct BipParameter {
@@ -28,7 +35,7 @@ std::string port_type(const std::string& name, const std::vector<BipParameter>& 
 /// `atom type TASTE_Cyclic(int period, int deadline, int offset)`, times in milliseconds: the
 /// first `start` at `offset`, then one every `period` after the previous start, each followed by
 /// the function's `done` within `deadline`. Its ports are of type `call_port` (no parameters).
-std::string cyclic_wrapper(const std::string& call_port);
+std::string cyclic_wrapper(const std::string& call_port, Wcet wcet = Wcet::Zero);
 
 /// `atom type NAME(int miat, int deadline)`: a sporadic interface with these parameters and a
 /// FIFO of `queue_size` calls. `call` (port type `call_port`, the caller's data) enqueues, or
@@ -38,7 +45,14 @@ std::string cyclic_wrapper(const std::string& call_port);
 /// to kMaxQueueSize.
 std::string sporadic_wrapper(const std::string& name, const std::string& call_port,
                              const std::string& done_port,
-                             const std::vector<BipParameter>& parameters,
-                             std::uint32_t queue_size);
+                             const std::vector<BipParameter>& parameters, std::uint32_t queue_size,
+                             Wcet wcet = Wcet::Zero);
+
+/// `atom type TASTE_Synchronous()` (with Wcet Interval and Uniform `(int wcet_low, int
+/// wcet_high)`): the execution time of a protected or unprotected interface, run in its caller's
+/// thread: `start` with the call, `done` with its return (port type `call_port`, no parameters).
+/// The function's return and the caller's result are lazy, so the wrapper's `done` gives the
+/// return its urgency.
+std::string synchronous_wrapper(const std::string& call_port, Wcet wcet);
 
 }  // namespace smcbip::taste2bip

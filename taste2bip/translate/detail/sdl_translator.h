@@ -1,0 +1,203 @@
+// The state of one SDL process's translation to a BIP atom: the data in scope, the atom text as
+// it grows (places, ports, transitions), and the open step that actions add statements to.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "bipc/diagnostics.h"
+#include "taste2bip/asn1/data_view.h"
+#include "taste2bip/sdl/sdl_ast.h"
+#include "taste2bip/translate/bip_types.h"
+#include "taste2bip/translate/sdl_atom.h"
+#include "taste2bip/translate/signature.h"
+
+namespace smcbip::taste2bip::detail {
+
+/// A value in BIP data: the data `data` (a variable, a field of it, an interface parameter)
+/// and its leaves relative to it; `type` is its ASN.1 type with references followed (null for
+/// the SDL builtin scalars).
+struct Ref {
+  std::string data;
+  std::vector<Leaf> leaves;
+  const asn1::Type* type = nullptr;
+};
+
+/// A scalar BIP expression and its kind (`int`, `bool`, `float`, `string`, or empty when the
+/// kind is not known).
+struct Scalar {
+  std::string text;
+  std::string kind;
+};
+
+/// What an SDL name stands for in a scope: a value in data, or (a `for` variable) a number.
+struct Binding {
+  std::optional<Ref> ref;
+  std::int64_t number = 0;
+};
+
+/// A transition being written: from a place (or the atom's initial transition) on a port,
+/// with its guard and statements; closed by naming the place it goes to.
+struct Step {
+  bool initial = false;
+  std::string port;
+  std::string from;
+  std::string guard;
+  std::vector<std::string> statements;
+};
+
+/// Where the steps of a translated action sequence end when they do not reach a terminator:
+/// falling off its end, or (inside an inlined procedure) at a `return`.
+struct Outcome {
+  std::vector<Step> falls, returns;
+  bool merge(Outcome other);
+};
+
+/// The transition a chain of steps belongs to: the state it started in (for `nextstate -`),
+/// the provided interface whose `return` ends it, and the out parameters copied before.
+struct Chain {
+  std::string origin;  // the stable state's place; empty for the start transition
+  std::string key;     // distinguishes the places of labels per chain context
+  const SignalInterface* serving = nullptr;
+  std::vector<std::pair<Ref, Ref>> out_copies;  // interface data <- variable, at the return
+};
+
+/// A label's continuation: the actions after it in `actions`.
+struct LabelSite {
+  const std::vector<sdl::Action>* actions = nullptr;
+  std::size_t index = 0;
+  bool top_level = true;
+};
+
+class Translator {
+ public:
+  Translator(const FunctionSignature& function, const sdl::Process& process,
+             const std::vector<const sdl::Procedure*>& procedures, const asn1::DataView& data,
+             bipc::Diagnostics& diags);
+  std::optional<AtomType> run();
+
+  // Names and errors (sdl_atom.cpp). While `quiet_`, errors only mark the attempt failed.
+  void error(const bipc::Location& at, const std::string& message);
+  std::string fresh(const std::string& base);
+  void reserve(const std::string& name) { used_.insert(name); }
+
+  // Declarations (sdl_atom.cpp).
+  void declare_timers();
+  void declare_variables();
+  void declare_procedure(const sdl::Procedure& p);
+  std::string text() const;
+
+  // Variables and values (sdl_atom_data.cpp).
+  std::optional<std::vector<Leaf>> leaves_of_type(const std::string& type, const bipc::Location& at,
+                                                  const asn1::Type** definition);
+  void declare_variable(const std::string& data, const std::vector<Leaf>& leaves);
+  std::optional<Ref> declare_sdl_variable(const sdl::Variable& v, const std::string& prefix);
+  static std::string default_value(const Leaf& leaf);
+  std::optional<Ref> field(const Ref& ref, const std::string& name, const bipc::Location& at);
+  std::optional<Ref> element(const Ref& ref, std::int64_t index, const bipc::Location& at);
+  Ref interface_ref(const SignalInterface& i, const SignalParameter& p) const;
+
+  // Expressions (sdl_atom_expr.cpp, sdl_atom_builtins.cpp).
+  std::optional<Ref> reference(const sdl::Expr& e);
+  std::optional<Scalar> scalar(const sdl::Expr& e, const asn1::Type* hint = nullptr);
+  std::optional<Scalar> name_value(const sdl::Expr& e, const asn1::Type* hint);
+  std::optional<Scalar> binary(const sdl::Expr& e);
+  std::optional<Scalar> call_value(const sdl::Expr& e, const asn1::Type* hint);
+  std::optional<std::int64_t> constant(const sdl::Expr& e);
+  std::optional<Scalar> equality(const sdl::Expr& a, const sdl::Expr& b, bool equal,
+                                 const bipc::Location& at);
+  const asn1::Type* type_of(const sdl::Expr& e);
+
+  // Assignments (sdl_atom_assign.cpp).
+  bool assign(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
+  bool assign_ref(const Ref& target, const Ref& source, const bipc::Location& at,
+                  std::vector<std::string>& out);
+  bool assign_sequence(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
+  bool assign_choice(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
+  bool assign_statement(const sdl::Expr& target, const sdl::Expr& value,
+                        std::vector<std::string>& out);
+
+  // Steps (sdl_atom_steps.cpp).
+  void close(Step step, const std::string& to);
+  Step open(const std::string& from, std::size_t branch = 0, std::string guard = {});
+  std::string place(const Chain& chain);
+  std::string branch_port(std::size_t k);
+
+  // Actions (sdl_atom_actions.cpp, sdl_atom_decision.cpp, sdl_atom_calls.cpp).
+  Outcome actions(const std::vector<sdl::Action>& list, std::size_t from, Step step,
+                  Chain& chain);
+  bool action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended);
+  bool task(const sdl::TaskElement& t, Step& step, Chain& chain, Outcome& out, bool& ended);
+  bool for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out, bool& ended);
+  void terminate(Step step, const std::string& target, Chain& chain);
+  /// The one step that continues after `falls` (a place joining them when there are several);
+  /// nullopt when there is none.
+  std::optional<Step> join_falls(std::vector<Step> falls, Chain& chain);
+  Outcome decision(const sdl::Action& a, Step step, Chain& chain);
+  std::optional<std::string> answer_guard(const sdl::Expr& question, const sdl::Answer& answer);
+  Outcome label(const std::string& name, const bipc::Location& at, Step step, Chain& chain,
+                bool sequential, const std::vector<sdl::Action>* list, std::size_t index);
+  bool output(const sdl::OutputSignal& s, Step& step, Chain& chain);
+  bool call(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended);
+  bool timer_call(const sdl::Action& a, bool set, Step& step);
+  bool write_call(const sdl::Action& a, bool newline, Step& step);
+  bool interface_call(const SignalInterface& r, const std::vector<sdl::Expr>& args,
+                      const bipc::Location& at, Step& step, Chain& chain);
+  bool procedure_call(const sdl::Procedure& p, const sdl::Action& a, Step& step, Chain& chain,
+                      Outcome& out, bool& ended);
+  std::optional<std::string> state_place(const std::string& name, const bipc::Location& at);
+
+  // States (sdl_atom_states.cpp).
+  void collect_states();
+  void collect_labels(const std::vector<sdl::Action>& list, bool top_level,
+                      std::map<std::string, LabelSite>& into);
+  void translate_start();
+  void translate_state(const std::string& state);
+  bool state_applies(const sdl::State& s, const std::string& state) const;
+  void input_transition(const std::string& state, const SignalInterface& p,
+                        const sdl::Input* input, const sdl::InputSignal* signal);
+  void timer_transition(const std::string& state, const std::string& timer,
+                        const sdl::Input* input);
+  void continuous_transitions(const std::string& state, const std::string& place);
+  void chain_end(const Outcome& outcome, const bipc::Location& at);
+  void add_state(const std::string& name);
+  void scan_nextstates(const std::vector<sdl::Action>& list);
+
+  // What the translation sees.
+  const FunctionSignature& function_;
+  const sdl::Process& process_;
+  const asn1::DataView& data_;
+  bipc::Diagnostics& diags_;
+  std::map<std::string, const sdl::Procedure*> procedures_;  // folded name
+  std::map<const sdl::Procedure*, std::map<std::string, Binding>> procedure_scopes_;
+  std::map<const sdl::Procedure*, std::vector<Ref>> procedure_parameters_;
+  std::vector<std::string> initial_statements_;
+  std::vector<std::map<std::string, Binding>> scopes_;       // innermost last
+  std::vector<std::map<std::string, LabelSite>> label_tables_;
+  std::vector<std::string> inlining_;  // procedures being inlined, for recursion
+  std::map<std::string, std::string> states_;  // folded SDL name -> place
+  std::vector<std::string> state_order_;       // folded names, in order of appearance
+  std::map<std::string, std::string> timers_;  // folded name -> BIP base name
+  std::map<std::string, std::string> label_places_;
+  std::size_t inline_count_ = 0;
+  std::string stop_place_;
+
+  // What the translation writes.
+  std::set<std::string> used_;
+  std::string data_text_, ports_text_, transitions_text_;
+  std::vector<std::string> places_;
+  std::vector<std::string> branch_ports_;
+  std::size_t place_count_ = 0;
+  std::vector<std::string> notes_, extern_types_, extern_functions_;
+  std::size_t errors_before_ = 0;
+  bool quiet_ = false;
+};
+
+/// `name` folded for SDL's case-insensitive matching ('-' and '_' alike).
+std::string folded(const std::string& name);
+
+}  // namespace smcbip::taste2bip::detail

@@ -1,0 +1,189 @@
+#include "taste2bip/translate/package.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "taste2bip/translate/abstract_atom.h"
+#include "taste2bip/translate/detail/faulty_package.h"
+#include "taste2bip/translate/detail/package_parts.h"
+#include "taste2bip/translate/sdl_atom.h"
+
+namespace smcbip::taste2bip {
+
+namespace {
+
+using detail::PackageParts;
+
+bool same_name(std::string_view a, std::string_view b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) ==
+           std::tolower(static_cast<unsigned char>(y));
+  });
+}
+
+struct FoundProcess {
+  const sdl::Process* process = nullptr;
+  std::vector<const sdl::Procedure*> procedures;  // visible from outside the process
+};
+
+void search_block(const sdl::Block& block, const std::string& name, FoundProcess& found) {
+  for (const sdl::Process& p : block.processes) {
+    if (!p.is_referenced && same_name(p.name, name)) found.process = &p;
+  }
+  for (const sdl::Procedure& p : block.procedures) found.procedures.push_back(&p);
+  for (const sdl::Block& inner : block.blocks) search_block(inner, name, found);
+}
+
+/// The process named like `function` (SDL names ignore case) in the files, with the procedures
+/// declared beside it.
+FoundProcess find_process(const std::vector<sdl::SdlFile>& files, const std::string& function) {
+  for (const sdl::SdlFile& file : files) {
+    FoundProcess found;
+    for (const sdl::Process& p : file.processes) {
+      if (!p.is_referenced && same_name(p.name, function)) found.process = &p;
+    }
+    for (const sdl::System& system : file.systems) {
+      for (const sdl::Procedure& p : system.procedures) found.procedures.push_back(&p);
+      for (const sdl::Block& block : system.blocks) search_block(block, function, found);
+    }
+    for (const sdl::Procedure& p : file.procedures) found.procedures.push_back(&p);
+    if (found.process != nullptr) return found;
+  }
+  return {};
+}
+
+const std::string* user_behaviour(const Design& design, const FunctionSignature& f) {
+  for (const auto& [name, text] : design.behaviours) {
+    if (same_name(name, f.source->name) || name == f.name) return &text;
+  }
+  return nullptr;
+}
+
+std::optional<AtomType> function_atom(const Design& design, const FunctionSignature& f,
+                                      bipc::Diagnostics& diags) {
+  if (const std::string* text = user_behaviour(design, f)) {
+    AtomType given;
+    given.name = f.name;
+    given.text = *text;
+    given.notes.push_back(f.name + ": the atom type given for it");
+    return given;
+  }
+  if (!same_name(f.language, "SDL")) return abstract_atom(f);
+  const FoundProcess found = find_process(design.sdl, f.source->name);
+  if (found.process == nullptr) {
+    diags.error(f.source->at, "SDL function " + f.source->name +
+                                  ": no process of that name in the SDL files given");
+    return std::nullopt;
+  }
+  return sdl_atom(f, *found.process, found.procedures, design.data, diags);
+}
+
+bool distinct_instances(const std::vector<FunctionSignature>& functions, bipc::Diagnostics& diags) {
+  std::set<std::string> names;
+  bool ok = true;
+  for (const FunctionSignature& f : functions) {
+    std::vector<std::string> own{f.name};
+    for (const SignalInterface& p : f.provided) own.push_back(f.name + "_" + p.name);
+    for (const std::string& n : own) {
+      if (!names.insert(n).second) {
+        diags.error(f.source->at, "function " + f.source->name + " gives the BIP name " + n +
+                                      ", which another function or interface already has");
+        ok = false;
+      }
+    }
+  }
+  return ok;
+}
+
+std::string nominal_text(const PackageOptions& options, const PackageParts& parts) {
+  std::string text =
+      "// The TASTE design as BIP, written by taste2bip: an atom per function, a\n"
+      "// timing wrapper per provided interface, a connector per call.\n";
+  text += "package " + options.name + "\n";
+  text += parts.extern_types.text() + parts.port_types.text() + parts.connector_types.text();
+  text += parts.atom_types.text();
+  text += "  compound type Syst()\n";
+  for (const std::string& c : parts.function_components) text += c;
+  for (const std::string& c : parts.components) text += c;
+  for (const std::string& c : parts.connectors) text += c;
+  return text + "  end\nend\n";
+}
+
+std::string position(const Design& design, const bipc::Location& at) {
+  const bool named = design.files != nullptr && at.file < design.files->paths.size();
+  return bipc::position_text(named ? design.files->path(at.file) : "", at.line, at.column);
+}
+
+void collect_extern_types(const FunctionSignature& f, PackageParts& parts) {
+  for (const auto* list : {&f.provided, &f.required}) {
+    for (const SignalInterface& i : *list) {
+      for (const SignalParameter& p : i.parameters) {
+        for (const std::string& t : extern_types_in(p.leaves)) {
+          parts.extern_types.add(t, "  extern data type " + t + "\n");
+        }
+      }
+    }
+  }
+}
+
+std::string report_text(const Design& design, const InterfaceView& view,
+                        const PackageParts& parts) {
+  std::string text;
+  for (const Assumption& a : view.assumptions) {
+    text += position(design, a.at) + ": assumed: " + a.text + "\n";
+  }
+  for (const std::string& line : parts.report) text += line + "\n";
+  return text;
+}
+
+}  // namespace
+
+std::optional<Packages> translate(const Design& design, const PackageOptions& options,
+                                  bipc::Diagnostics& diags) {
+  const std::size_t errors = diags.error_count();
+  const InterfaceView view = flatten(design.view, diags);
+  std::vector<FunctionSignature> functions;
+  for (std::size_t i = 0; i < view.functions.size(); ++i) {
+    functions.push_back(function_signature(view, i, design.data, diags));
+  }
+  if (diags.error_count() > errors || !distinct_instances(functions, diags)) return std::nullopt;
+
+  PackageParts parts;
+  std::vector<AtomType> atoms;
+  for (const FunctionSignature& f : functions) {
+    auto atom = function_atom(design, f, diags);
+    if (!atom) continue;
+    for (const std::string& t : atom->extern_types) {
+      parts.extern_types.add(t, "  extern data type " + t + "\n");
+    }
+    for (const std::string& f : atom->extern_functions) parts.extern_types.add(f, "  " + f + "\n");
+    parts.report.push_back(f.source->name + " (" + f.language + "): atom type " + atom->name);
+    for (const std::string& note : atom->notes) parts.report.push_back("  " + note);
+    atoms.push_back(std::move(*atom));
+  }
+  for (const FunctionSignature& f : functions) {
+    collect_extern_types(f, parts);
+    std::vector<std::pair<std::string, std::vector<std::string>>> port_types;
+    collect_port_types(f, port_types);
+    for (const auto& [name, types] : port_types) detail::use_port_type(types, parts);
+  }
+  for (std::size_t i = 0; i < functions.size(); ++i) {
+    detail::connect_function(view, functions, i, options.wcet, parts, diags);
+  }
+  if (diags.error_count() > errors) return std::nullopt;
+
+  for (const AtomType& atom : atoms) {
+    parts.atom_types.add(atom.name, atom.text);
+    parts.function_components.push_back("    component " + atom.name + " " + atom.name + "()\n");
+  }
+  Packages out;
+  out.nominal = nominal_text(options, parts);
+  out.faulty = detail::faulty_package(
+      options.name, parts.extern_types.text() + parts.port_types.text(), functions, atoms);
+  out.requirements = detail::requirements_package(options.name);
+  out.report = report_text(design, view, parts);
+  return out;
+}
+
+}  // namespace smcbip::taste2bip

@@ -1,0 +1,167 @@
+// The SDL process translation's entry point: the declarations of the atom (interface data,
+// timers, variables, inlined procedures' data) and the assembly of its text.
+#include "taste2bip/translate/sdl_atom.h"
+
+#include <cctype>
+
+#include "taste2bip/names.h"
+#include "taste2bip/translate/detail/sdl_translator.h"
+
+namespace smcbip::taste2bip {
+
+namespace detail {
+
+std::string folded(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    out += c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+bool Outcome::merge(Outcome other) {
+  for (Step& s : other.falls) falls.push_back(std::move(s));
+  for (Step& s : other.returns) returns.push_back(std::move(s));
+  return true;
+}
+
+Translator::Translator(const FunctionSignature& function, const sdl::Process& process,
+                       const std::vector<const sdl::Procedure*>& procedures,
+                       const asn1::DataView& data, bipc::Diagnostics& diags)
+    : function_(function), process_(process), data_(data), diags_(diags) {
+  for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)] = p;
+  for (const sdl::Procedure& p : process.body.procedures) procedures_[folded(p.name)] = &p;
+  errors_before_ = diags.error_count();
+}
+
+void Translator::error(const bipc::Location& at, const std::string& message) {
+  if (!quiet_) diags_.error(at, message);
+}
+
+std::string Translator::fresh(const std::string& base) {
+  std::string name = base;
+  for (int k = 1; used_.count(name) > 0; ++k) name = base + "_" + std::to_string(k);
+  used_.insert(name);
+  return name;
+}
+
+void Translator::declare_timers() {
+  std::vector<std::string> names;
+  for (const sdl::Timer& t : process_.body.timers) names.push_back(t.name);
+  for (const std::string& t : function_.context_timers) names.push_back(t);
+  for (const std::string& t : names) {
+    if (timers_.count(folded(t)) > 0) continue;
+    const std::string base = bip_identifier(t);
+    timers_[folded(t)] = base;
+    for (const char* suffix : {"_clock", "_armed", "_value", "_expired"}) reserve(base + suffix);
+    data_text_ += "    clock " + base + "_clock unit millisecond\n    data bool " + base +
+                  "_armed = false\n    data int " + base + "_value = 0\n";
+    ports_text_ += "    port Port " + base + "_expired()\n";
+  }
+}
+
+void Translator::declare_variables() {
+  scopes_.emplace_back();
+  for (const sdl::Variable& v : process_.body.variables) {
+    std::optional<Ref> ref = declare_sdl_variable(v, "");
+    if (!ref) continue;
+    scopes_.back()[folded(v.name)] = Binding{*ref, 0};
+    if (v.initial) assign(*ref, *v.initial, initial_statements_);
+  }
+}
+
+void Translator::declare_procedure(const sdl::Procedure& p) {
+  if (p.is_external || p.is_referenced) return;
+  const std::string prefix = bip_identifier(p.name) + "_";
+  auto& scope = procedure_scopes_[&p];
+  for (const sdl::FormalParameter& f : p.parameters) {
+    if (f.direction == sdl::FormalParameter::Direction::Out) {
+      error(f.at, "out parameter '" + f.name + "' is not translated (in and in/out are)");
+    }
+    std::optional<Ref> ref = declare_sdl_variable(sdl::Variable{f.name, f.type, {}, f.at}, prefix);
+    if (!ref) continue;
+    scope[folded(f.name)] = Binding{*ref, 0};
+    procedure_parameters_[&p].push_back(*ref);
+  }
+  for (const sdl::Variable& v : p.body.variables) {
+    std::optional<Ref> ref = declare_sdl_variable(v, prefix);
+    if (ref) scope[folded(v.name)] = Binding{*ref, 0};
+  }
+  if (!p.return_type.empty() && !p.return_name.empty()) {
+    sdl::Variable result{p.return_name, p.return_type, {}, p.at};
+    std::optional<Ref> ref = declare_sdl_variable(result, prefix);
+    if (ref) scope[folded(p.return_name)] = Binding{*ref, 0};
+  }
+  if (!p.body.procedures.empty() || !p.body.composite_states.empty() ||
+      !p.body.states.empty() || !p.body.timers.empty()) {
+    error(p.at, "procedure '" + p.name +
+                           "' has states, timers or nested procedures, which are not translated");
+  }
+}
+
+std::optional<AtomType> Translator::run() {
+  for (const auto* list : {&function_.provided, &function_.required}) {
+    for (const SignalInterface& i : *list) {
+      for (bool out : {false, true}) {
+        for (const std::string& n : i.data_names(out)) reserve(n);
+      }
+      for (const char* port : {"_in", "_return", "_out", "_result"}) reserve(i.name + port);
+    }
+  }
+  for (const sdl::CompositeState& c : process_.body.composite_states) {
+    error(c.at, "nested state '" + c.name + "' is not translated");
+  }
+  declare_timers();
+  declare_variables();
+  for (const auto& [name, p] : procedures_) declare_procedure(*p);
+  collect_states();
+  label_tables_.emplace_back();
+  for (const sdl::FloatingLabel& l : process_.body.labels) {
+    label_tables_.back()[folded(l.name)] = LabelSite{&l.transition.actions, 0, true};
+    collect_labels(l.transition.actions, true, label_tables_.back());
+  }
+  for (const sdl::Start& s : process_.body.starts) {
+    collect_labels(s.transition.actions, true, label_tables_.back());
+  }
+  for (const sdl::State& s : process_.body.states) {
+    for (const sdl::Input& i : s.inputs) {
+      collect_labels(i.transition.actions, true, label_tables_.back());
+    }
+    for (const sdl::ContinuousSignal& c : s.continuous) {
+      collect_labels(c.transition.actions, true, label_tables_.back());
+    }
+  }
+  translate_start();
+  for (const std::string& state : std::vector<std::string>(state_order_)) translate_state(state);
+  if (diags_.error_count() > errors_before_) return std::nullopt;
+  AtomType atom;
+  atom.name = function_.name;
+  atom.text = text();
+  atom.extern_types = extern_types_;
+  atom.extern_functions = extern_functions_;
+  atom.notes = notes_;
+  return atom;
+}
+
+std::string Translator::text() const {
+  std::string out = "  atom type " + function_.name + "()\n";
+  out += interface_declarations(function_);
+  out += data_text_ + ports_text_;
+  for (const std::string& port : branch_ports_) out += "    port Port " + port + "()\n";
+  std::string places;
+  for (const std::string& p : places_) places += (places.empty() ? "" : ", ") + p;
+  if (!places.empty()) out += "    place " + places + "\n";
+  out += transitions_text_;
+  return out + "  end\n";
+}
+
+}  // namespace detail
+
+std::optional<AtomType> sdl_atom(const FunctionSignature& function, const sdl::Process& process,
+                                 const std::vector<const sdl::Procedure*>& procedures,
+                                 const asn1::DataView& data, bipc::Diagnostics& diags) {
+  detail::Translator translator(function, process, procedures, data, diags);
+  return translator.run();
+}
+
+}  // namespace smcbip::taste2bip

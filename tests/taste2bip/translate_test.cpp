@@ -1,0 +1,191 @@
+// The translation's data and contracts: ASN.1 values as scalar leaves, function signatures, and
+// whole designs whose BIP the front end accepts.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "taste2bip/translate/bip_types.h"
+#include "taste2bip/translate/package.h"
+#include "taste2bip/translate/signature.h"
+
+namespace smcbip::taste2bip {
+namespace {
+
+asn1::DataView resolved(const std::string& text, bipc::Diagnostics& diags) {
+  asn1::DataView view;
+  asn1::read_asn1(text, 0, view, diags);
+  asn1::resolve(view, diags);
+  return view;
+}
+
+/// `suffix:type` of each leaf, comma-separated.
+std::string outline(const std::vector<Leaf>& leaves) {
+  std::string out;
+  for (const Leaf& leaf : leaves) out += (out.empty() ? "" : ", ") + leaf.suffix + ":" + leaf.type;
+  return out;
+}
+
+const char* const kTypes = R"(M DEFINITIONS AUTOMATIC TAGS ::= BEGIN
+  T-Double ::= REAL
+  Angle ::= SEQUENCE { rad T-Double }
+  Motion2D ::= SEQUENCE { translation T-Double, rotation T-Double, heading Angle }
+  Mode ::= ENUMERATED { idle, run(5) }
+  Pick ::= CHOICE { a BOOLEAN, b Mode }
+  Opt ::= SEQUENCE { x INTEGER (0..9) OPTIONAL, y BOOLEAN }
+  Fixed ::= SEQUENCE (SIZE (2)) OF INTEGER (0..3)
+  Varying ::= SEQUENCE (SIZE (0..3)) OF Angle
+  Big ::= SEQUENCE (SIZE (1..100)) OF INTEGER (0..3)
+  Bytes ::= OCTET STRING (SIZE (4))
+  Name ::= IA5String (SIZE (1..8))
+  Holder ::= SEQUENCE { data Bytes, n NULL }
+END
+)";
+
+std::string leaves_text(const std::string& type) {
+  bipc::Diagnostics diags;
+  const asn1::DataView view = resolved(kTypes, diags);
+  EXPECT_FALSE(diags.has_errors());
+  const auto leaves = leaves_of(view, type, {}, diags);
+  return leaves ? outline(*leaves) : "not found";
+}
+
+TEST(TranslateLeaves, ScalarsAreOneLeafWithoutSuffix) {
+  EXPECT_EQ(leaves_text("T-Double"), ":float");
+  EXPECT_EQ(leaves_text("Mode"), ":int");
+  EXPECT_EQ(leaves_text("Name"), ":string");
+}
+
+TEST(TranslateLeaves, SequencesSpreadOverTheirFieldsAtAnyDepth) {
+  EXPECT_EQ(leaves_text("Motion2D"), "translation:float, rotation:float, heading_rad:float");
+}
+
+TEST(TranslateLeaves, ChoicesOptionalsAndArraysKeepTheirBookkeeping) {
+  EXPECT_EQ(leaves_text("Pick"), "present:int, a:bool, b:int");
+  EXPECT_EQ(leaves_text("Opt"), "x_exist:bool, x:int, y:bool");
+  EXPECT_EQ(leaves_text("Fixed"), "0:int, 1:int");
+  EXPECT_EQ(leaves_text("Varying"), "length:int, 0_rad:float, 1_rad:float, 2_rad:float");
+}
+
+TEST(TranslateLeaves, WhatHasNoBoundedScalarFormStaysExtern) {
+  EXPECT_EQ(leaves_text("Big"), ":asn1SccBig");
+  EXPECT_EQ(leaves_text("Bytes"), ":asn1SccBytes");
+  EXPECT_EQ(leaves_text("Holder"), "data:asn1SccBytes");
+}
+
+TEST(TranslateLeaves, TypesAreFoundAsEveryViewSpellsThem) {
+  bipc::Diagnostics diags;
+  const asn1::DataView view = resolved(kTypes, diags);
+  EXPECT_TRUE(find_type_spelled(view, "Motion2D"));
+  EXPECT_TRUE(find_type_spelled(view, "t_double"));  // AADL's '_', SDL's any case
+  EXPECT_FALSE(find_type_spelled(view, "Motion3D"));
+  const auto none = leaves_of(view, "Motion3D", bipc::Location{0, 4, 7}, diags);
+  EXPECT_FALSE(none);
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_EQ(diags.all()[0].location.line, 4u);
+}
+
+TEST(TranslatePortTypes, EqualTypeListsShareOnePortType) {
+  EXPECT_EQ(port_type_name({}), "Port");
+  EXPECT_EQ(port_type_name({"float", "float", "int", "bool"}), "Port_ffib");
+  EXPECT_EQ(port_type_name({"asn1SccBytes", "int"}), "Port_xasn1SccBytes_i");
+  EXPECT_NE(port_type_name({"int", "int"}), port_type_name({"int"}));
+}
+
+/// A design of two C functions: Caller's cyclic `tick` calls Callee's protected `get(in x, out
+/// y)` and sporadic `put(v)`.
+Design small_design(bipc::Diagnostics& diags, InterfaceKind get_kind) {
+  Design design;
+  design.data = resolved(kTypes, diags);
+  Function caller{"Caller", "C", {}, {}, {}, std::nullopt, false, {}};
+  Interface tick{"tick", InterfaceKind::Cyclic, {}, 100.0, 20.0, 0.0, std::nullopt, 1.0, 2.0, {}};
+  caller.provided.push_back(tick);
+  using Direction = Parameter::Direction;
+  Interface get{"get",
+                InterfaceKind::Any,
+                {{Direction::In, "x", "Mode", {}}, {Direction::Out, "y", "Motion2D", {}}}};
+  Interface put{"put", InterfaceKind::Any, {{Direction::In, "v", "Angle", {}}}};
+  caller.required = {get, put};
+  Function callee{"Callee", "C", {}, {}, {}, std::nullopt, false, {}};
+  get.kind = get_kind;
+  put.kind = InterfaceKind::Sporadic;
+  put.queue_size = 2;
+  callee.provided = {get, put};
+  design.view.functions = {caller, callee};
+  design.view.connections = {{{"Caller", "get", false}, {"Callee", "get", true}, {}},
+                             {{"Caller", "put", false}, {"Callee", "put", true}, {}}};
+  return design;
+}
+
+TEST(TranslateSignature, InterfacesCarryTheirParametersLeavesAndReachedKinds) {
+  bipc::Diagnostics diags;
+  Design design = small_design(diags, InterfaceKind::Protected);
+  const FunctionSignature caller = function_signature(design.view, 0, design.data, diags);
+  EXPECT_FALSE(diags.has_errors());
+  ASSERT_EQ(caller.required.size(), 2u);
+  EXPECT_TRUE(caller.required[0].synchronous());
+  EXPECT_FALSE(caller.required[1].synchronous());
+  EXPECT_EQ(caller.required[0].data_names(false), std::vector<std::string>{"get_x"});
+  EXPECT_EQ(caller.required[0].data_names(true),
+            (std::vector<std::string>{"get_y_translation", "get_y_rotation", "get_y_heading_rad"}));
+  const std::string ports = interface_declarations(caller);
+  EXPECT_NE(ports.find("export port Port_i get_out(get_x)"), std::string::npos) << ports;
+  EXPECT_NE(ports.find("export port Port_fff get_result(get_y_translation, get_y_rotation, "
+                       "get_y_heading_rad)"),
+            std::string::npos)
+      << ports;
+  EXPECT_NE(ports.find("export port Port tick_return()"), std::string::npos) << ports;
+}
+
+TEST(TranslateSignature, ARequiredInterfaceNamedLikeAProvidedOneGetsItsOwnData) {
+  bipc::Diagnostics diags;
+  Design design = small_design(diags, InterfaceKind::Protected);
+  design.view.functions[1].required.push_back(design.view.functions[0].required[1]);  // put
+  const FunctionSignature callee = function_signature(design.view, 1, design.data, diags);
+  EXPECT_EQ(callee.provided[1].data_names(false), std::vector<std::string>{"put_v_rad"});
+  EXPECT_EQ(callee.required[0].data_names(false), std::vector<std::string>{"put_ri_v_rad"});
+}
+
+TEST(TranslateDesign, EveryCallKindAndWcetModeGivesBipTheFrontEndAccepts) {
+  for (InterfaceKind kind :
+       {InterfaceKind::Protected, InterfaceKind::Unprotected, InterfaceKind::Sporadic}) {
+    for (Wcet wcet : {Wcet::Zero, Wcet::Interval, Wcet::Uniform}) {
+      bipc::Diagnostics diags;
+      Design design = small_design(diags, kind);
+      if (kind == InterfaceKind::Sporadic) {  // a sporadic interface has no out parameters
+        design.view.functions[0].required[0].parameters.pop_back();
+        design.view.functions[1].provided[0].parameters.pop_back();
+      }
+      PackageOptions options;
+      options.wcet = wcet;
+      const auto packages = translate(design, options, diags);
+      ASSERT_TRUE(packages) << static_cast<int>(kind) << diags.format({});
+      EXPECT_EQ(bipc_diagnostics(packages->nominal, "taste"), "") << packages->nominal;
+      EXPECT_NE(packages->faulty.find("atom type Caller_faulty()"), std::string::npos);
+    }
+  }
+}
+
+TEST(TranslateDesign, ASporadicInterfaceWithOutParametersIsRefusedAtIt) {
+  bipc::Diagnostics diags;
+  Design design = small_design(diags, InterfaceKind::Sporadic);
+  design.view.functions[1].provided[0].at = bipc::Location{0, 9, 3};
+  EXPECT_FALSE(translate(design, {}, diags));
+  ASSERT_TRUE(diags.has_errors());
+  EXPECT_EQ(diags.all()[0].location.line, 9u);
+  EXPECT_NE(diags.all()[0].message.find("out parameters"), std::string::npos);
+}
+
+TEST(TranslateDesign, AnUnconnectedRequiredInterfaceIsReported) {
+  bipc::Diagnostics diags;
+  Design design = small_design(diags, InterfaceKind::Protected);
+  design.view.connections.pop_back();
+  const auto packages = translate(design, {}, diags);
+  ASSERT_TRUE(packages);
+  EXPECT_NE(packages->report.find("Caller.put: connected to nothing"), std::string::npos)
+      << packages->report;
+  EXPECT_EQ(bipc_diagnostics(packages->nominal, "taste"), "");
+}
+
+}  // namespace
+}  // namespace smcbip::taste2bip
