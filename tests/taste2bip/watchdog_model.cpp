@@ -235,6 +235,33 @@ void remove_fault_transitions(bipc::ir::System& system) {
   }
 }
 
+WatchdogObservation watchdog_observation(WatchdogNaming naming, bool watchdog_calls,
+                                         bool watchdog_wait) {
+  struct Call {
+    const char *function, *interface, *direction;
+  };
+  std::vector<Call> calls = {
+      {"JoystickDriver", "step", "in"},     {"JoystickDriver", "cmd", "out"},
+      {"CmdDispatcher", "cmd", "in"},       {"CmdDispatcher", "log_cmd", "out"},
+      {"CmdDispatcher", "test_cmd", "out"}, {"Logger", "log_cmd", "in"},
+      {"BLSClient", "mot_cmd", "in"}};
+  if (watchdog_calls) {
+    calls.push_back({"Watchdog", "test_cmd", "in"});
+    calls.push_back({"Watchdog", "mot_cmd", "out"});
+  }
+  WatchdogObservation o;
+  for (const Call& c : calls) {
+    const std::string f = c.function, port = std::string(c.interface) + "_" + c.direction;
+    o.ports[f + "." + (naming == WatchdogNaming::Original ? f + "_" : "") + port] =
+        f + "." + c.interface;
+  }
+  for (const char* f : {"JoystickDriver", "CmdDispatcher", "Logger", "BLSClient"}) {
+    o.places[std::string(f) + ".Wait"] = std::string(f) + ".Wait";
+  }
+  if (watchdog_wait) o.places["Watchdog.Wait"] = "Watchdog.Wait";
+  return o;
+}
+
 Motion2D motion2d_value(std::int64_t handle) { return records().value(handle); }
 
 }  // namespace smcbip::taste2bip::test

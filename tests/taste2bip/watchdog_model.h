@@ -33,6 +33,7 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/externs.h"
+#include "tests/taste2bip/watchdog_traces.h"
 
 /// Skips the calling test (one-line reason) when the shared data is absent (a user's clone).
 #define WATCHDOG_SKIP_WITHOUT_DATA()                                                 \
@@ -68,6 +69,17 @@ std::optional<bipc::ir::System> load_watchdog_original(std::string& why);
 /// The transitions labelled by ports annotated `@fault` removed (JoystickDriver.fault1: the
 /// lost heartbeat), leaving the nominal behaviour.
 void remove_fault_transitions(bipc::ir::System& system);
+
+/// Whose names an observation uses: the original translator's (port `F.F_p_in`) or the new
+/// translation's (`F.p_in`, taste2bip/translate/signature.h).
+enum class WatchdogNaming { Original, Translation };
+
+/// The calls of the design's functions, under the labels `F.p` whatever the naming: those of
+/// the four SDL functions (JoystickDriver, CmdDispatcher, Logger, BLSClient), and with
+/// `watchdog_calls` those of the C++ function Watchdog (test_cmd, mot_cmd); the SDL functions'
+/// state Wait as `F.Wait`, and with `watchdog_wait` Watchdog's place Wait (original only).
+WatchdogObservation watchdog_observation(WatchdogNaming naming, bool watchdog_calls,
+                                         bool watchdog_wait);
 
 /// The translation, rotation and heading of a record handle (for tests that read data).
 struct Motion2D {

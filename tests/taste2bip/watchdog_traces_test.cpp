@@ -14,25 +14,10 @@
 namespace smcbip::taste2bip::test {
 namespace {
 
-/// The original's ports and SDL states under the labels `Function.interface` and
-/// `Function.state`; Watchdog (a C++ function) is observed too.
+/// The original's calls and SDL states, and Watchdog's calls and place Wait.
 WatchdogObservation original_observation() {
-  WatchdogObservation o;
-  const std::vector<std::pair<std::string, std::string>> calls = {
-      {"JoystickDriver", "step_in"},     {"JoystickDriver", "cmd_out"},
-      {"CmdDispatcher", "cmd_in"},       {"CmdDispatcher", "log_cmd_out"},
-      {"CmdDispatcher", "test_cmd_out"}, {"Logger", "log_cmd_in"},
-      {"Watchdog", "test_cmd_in"},       {"Watchdog", "mot_cmd_out"},
-      {"BLSClient", "mot_cmd_in"}};
-  for (const auto& [function, port] : calls) {
-    const std::string interface = port.substr(0, port.rfind('_'));
-    o.ports[function + "." + function + "_" + port] = function + "." + interface;
-  }
-  for (const char* function :
-       {"JoystickDriver", "CmdDispatcher", "Logger", "BLSClient", "Watchdog"}) {
-    o.places[std::string(function) + ".Wait"] = std::string(function) + ".Wait";
-  }
-  return o;
+  return watchdog_observation(WatchdogNaming::Original, /*watchdog_calls=*/true,
+                              /*watchdog_wait=*/true);
 }
 
 /// The traces of the untimed abstraction of `text` (an adapted original, or a variant of it).
