@@ -50,7 +50,9 @@ class TraceExplorer {
       return std::move(out_);
     }
     std::map<Trace, Bucket> level;
-    level[{}].add(runtime_->state());
+    RunState initial = runtime_->state();
+    erase(initial);
+    level[{}].add(std::move(initial));
     out_.traces.insert(Trace{});
     for (std::size_t depth = 0; depth < bounds_.events && !level.empty(); ++depth) {
       std::map<Trace, Bucket> next;
@@ -69,6 +71,13 @@ class TraceExplorer {
         const auto it = observation.ports.find(path + "." + type.ports[p].name);
         if (it != observation.ports.end()) port_labels_[{a, p}] = it->second;
       }
+      for (bipc::ir::Index d = 0; d < type.data.size(); ++d) {
+        const std::string& name = type.data[d].name;
+        if (observation.erased_data.contains(path + "." + name) ||
+            observation.erased_data.contains("*." + name)) {
+          erased_slots_.push_back(layout_.atom_data[a] + d);
+        }
+      }
       for (bipc::ir::Index p = 0; p < type.places.size(); ++p) {
         const auto it = observation.places.find(path + "." + type.places[p]);
         if (it != observation.places.end()) {
@@ -76,6 +85,10 @@ class TraceExplorer {
         }
       }
     }
+  }
+
+  void erase(RunState& state) const {
+    for (const std::size_t slot : erased_slots_) state.data[slot] = engines::make_int(0);
   }
 
   /// The labels a step shows: its observed ports (sorted), then the places it entered (sorted).
@@ -122,6 +135,7 @@ class TraceExplorer {
         }
         RunState after = runtime_->state();
         after.now = state.now;
+        erase(after);
         const Trace shown = labels(ports, state, after);
         if (shown.empty()) {
           if (silent + 1 > bounds_.silent_steps) {
@@ -153,6 +167,7 @@ class TraceExplorer {
   std::unique_ptr<engines::Runtime> runtime_;
   std::map<std::pair<bipc::ir::Index, bipc::ir::Index>, std::string> port_labels_;
   std::vector<std::pair<std::size_t, std::string>> place_labels_;
+  std::vector<std::size_t> erased_slots_;  // in RunState::data
   TraceSet out_;
 };
 

@@ -23,6 +23,11 @@ struct WatchdogObservation {
   /// Places, "atom.place": a step after which the place is marked and was not before shows its
   /// label (an atom entering an SDL state).
   std::map<std::string, std::string> places;
+  /// Data, "atom.data" or "*.data" (every atom's), reset to zero after every step: for data
+  /// that nothing reads but their own update (counters of dropped calls), which would make the
+  /// untimed state space infinite. Erasing data that a guard or another update reads changes
+  /// the behaviour: only the caller can tell, so it names them.
+  std::set<std::string> erased_data;
 };
 
 /// How far the traces are explored (stated by each test).
