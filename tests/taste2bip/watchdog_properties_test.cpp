@@ -2,11 +2,17 @@
 // model checking on the adapted original (watchdog_model.h). The smcbip tool cannot register
 // the model's extern functions, so the queries go through smc::check_properties, which takes
 // extern functions only from a model entry (engines::PluginEntry): here the interpreted model of
-// the same system with the watchdog externs, not generated code.
+// the same system with the watchdog externs, not generated code. (`smcbip check` on the
+// original stops at its `@cpp(src=...)`: "extern source .../ext-cpp/ExternInterfaceViewFcns.cpp:
+// no such file"; the data holds no C++.)
 //
 // Statistics: PESTIM with delta = 0.02 and alpha = 0.01, so N = ceil(ln(2/alpha) / (2 delta^2))
 // = 6,623 runs per query and each estimate is within 0.02 of the true probability with
 // probability 0.99 (Okamoto's bound); seeds are fixed, so a given build passes or fails for good.
+// Answers recorded (seed 20261125, with the fault): (i) 1 [0.98, 1]; (ii) 1 [0.98, 1];
+// (iii) 0 [0, 0.02]. Nominal (seed 20261126): no stop 0 [0, 0.02]; (i) 1 [0.98, 1]. The true
+// values are 1 and 0 by the model's structure (derived in watchdog.mtl), so each assertion
+// below allows the estimate its delta.
 #include <gtest/gtest.h>
 
 #include <string>

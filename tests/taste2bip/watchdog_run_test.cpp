@@ -106,9 +106,10 @@ TEST(WatchdogOriginal, ALostHeartbeatMakesTheWatchdogSendStop) {
   WATCHDOG_SKIP_WITHOUT_DATA();
   std::string output;
   const Deliveries d = run_original(/*nominal=*/false, 400, 7, output);
-  // fault1 is enabled while JoystickDriver's clock is below 100 ms; a lazy transition is
-  // planned uniformly in its window, so it fires before the second period's step at 100 ms.
-  // The last command reached the watchdog at 0 ms: it times out 110 ms later.
+  // fault1 is enabled while JoystickDriver's clock is below 100 ms and is lazy: the engines
+  // plan it in its window cut to the date of the urgent steps, so it fires in the first
+  // period (at 0 ms, among its instantaneous steps). The last command reached the watchdog at
+  // 0 ms: it times out 110 ms later and sends the stop.
   bool stopped = false;
   for (const auto& [date, record] : d.received) {
     if (record != Motion2D{}) continue;
