@@ -138,11 +138,14 @@ class TraceExplorer {
         erase(after);
         const Trace shown = labels(ports, state, after);
         if (shown.empty()) {
+          std::string key = engines::state_key(after);
+          if (bucket.keys.contains(key)) continue;
           if (silent + 1 > bounds_.silent_steps) {
-            out_.cut = true;
-          } else if (bucket.keys.insert(engines::state_key(after)).second) {
-            queue.emplace_back(std::move(after), silent + 1);
+            out_.cut = true;  // a new state beyond the bound: left unexplored
+            continue;
           }
+          bucket.keys.insert(std::move(key));
+          queue.emplace_back(std::move(after), silent + 1);
           continue;
         }
         Trace extended = trace;

@@ -54,6 +54,15 @@ TEST(WatchdogUntimed, ClockComparisonsHoldAndDataStillDecides) {
   EXPECT_EQ(traces.problem, "");
   const std::set<Trace, ShorterFirst> expected = {{}, {"go"}, {"go", "back"}};
   EXPECT_EQ(traces.traces, expected);
+  EXPECT_FALSE(traces.cut);
+
+  // Unobserved, `go` and `back` are silent steps: one silent step allowed leaves `back`'s
+  // state unexplored, and the exploration says so.
+  bounds.silent_steps = 1;
+  const TraceSet silent =
+      projected_traces(*system, engines::Externs::with_builtins(), WatchdogObservation{}, bounds);
+  EXPECT_TRUE(silent.cut);
+  EXPECT_EQ(silent.states, 2u);
 }
 
 TEST(WatchdogUntimed, AClockPassedToAFunctionIsRefused) {
