@@ -13,42 +13,12 @@
 #include <iostream>
 #include <string>
 
-#include "taste2bip/translate/package.h"
-#include "taste2bip/translate/read_design.h"
-#include "tests/taste2bip/shared_data.h"
 #include "tests/taste2bip/watchdog_model.h"
+#include "tests/taste2bip/watchdog_translation.h"
 #include "tests/taste2bip/watchdog_untimed.h"
 
 namespace smcbip::taste2bip::test {
 namespace {
-
-/// The nominal package taste2bip writes for the design (default options: WCET zero).
-std::optional<std::string> translated_package(std::string& why) {
-  DesignFiles files;
-  files.interface_view =
-      (shared_data_dir() / "esrocos-mc_watchdog" / "TasteModel" / "InterfaceView.aadl").string();
-  bipc::SourceFiles sources;
-  bipc::Diagnostics diags;
-  std::vector<std::string> notes;
-  std::optional<Packages> packages;
-  if (std::optional<Design> design = read_design(files, sources, diags, notes)) {
-    packages = translate(*design, PackageOptions{}, diags);
-  }
-  if (!packages) {
-    why = diags.format(sources);
-    return std::nullopt;
-  }
-  return packages->nominal;
-}
-
-/// The translation's observation. Its sporadic wrappers count the calls they drop (`dropped`,
-/// which nothing reads): untimed, a cyclic caller may call without end, so the count is erased
-/// (watchdog_traces.h), as the original's FIFO drops such calls without counting them.
-WatchdogObservation translation_observation(bool watchdog_calls) {
-  WatchdogObservation o = watchdog_observation(WatchdogNaming::Translation, watchdog_calls, false);
-  o.erased_data.insert("*.dropped");
-  return o;
-}
 
 /// The traces of the untimed abstraction of `system` under `observation`, explored whole.
 TraceSet untimed_traces(bipc::ir::System system, const WatchdogObservation& observation,
@@ -60,25 +30,6 @@ TraceSet untimed_traces(bipc::ir::System system, const WatchdogObservation& obse
   EXPECT_EQ(traces.errors, 0u);
   EXPECT_FALSE(traces.cut) << "the bounds left states unexplored";
   return traces;
-}
-
-/// Both models: the nominal original (its hand-added fault transitions removed: the
-/// translation's nominal package has none) and the translation.
-struct BothModels {
-  std::optional<bipc::ir::System> original, translation;
-};
-
-BothModels load_both() {
-  BothModels both;
-  std::string why;
-  both.original = load_watchdog_original(why);
-  EXPECT_TRUE(both.original) << why;
-  if (both.original) remove_fault_transitions(*both.original);
-  const std::optional<std::string> package = translated_package(why);
-  EXPECT_TRUE(package) << why;
-  if (package) both.translation = load_bip_text(*package, "taste.bip", "Syst()", why);
-  EXPECT_TRUE(!package || both.translation) << why;
-  return both;
 }
 
 TEST(WatchdogCompare, TheSdlFunctionsCallsAndStatesAreTheOriginals) {
