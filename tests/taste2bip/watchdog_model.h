@@ -14,15 +14,20 @@
 // Nothing else changes: places, transitions, guards, timing and connectors are the original's.
 //
 // What the externs keep (watchdog_externs): a Base_commands_Motion2D record is its translation,
-// rotation and heading (doubles; the heading and others as written, no ASN.1 range check), a
-// Base_Angle its radians. Records and queues are immutable values interned in a process-wide
-// pool: a handle (Val::i) names one value, equal values have equal handles (so an explorer that
-// compares states by their bytes compares records and queues by value), handle 0 is the default
-// (all-zero record, empty queue) that the engines give extern data before any assignment.
-// `push_back(q, v, size)` on a queue holding `size` elements or more returns q unchanged (the
-// call is dropped, as the new translation's sporadic wrappers drop calls to a full FIFO);
-// `front` and `pop_front` of an empty queue give the default record and the empty queue (the
-// model only calls them when `get_size(q) > 0`). write/writeln print to the run's output.
+// rotation and heading as the doubles the model writes (no ASN.1 range or precision), a
+// Base_Angle its radians; the one decision that reads them is BLSClient's (all three zero: a
+// stop command), and Logger prints them. Records and queues are immutable values interned in a
+// process-wide pool: a handle (Val::i) names one value, equal values have equal handles (so an
+// explorer that compares states by their bytes compares records and queues by value), handle 0 is
+// the default (all-zero record, empty queue) that the engines give extern data before any
+// assignment. `push_back(q, v, size)` on a queue holding `size` elements or more returns q
+// unchanged (the call is dropped, as the new translation's sporadic wrappers drop calls to a full
+// FIFO: an assumption, since the original's ext-cpp sources are not in the data); `front` and
+// `pop_front` of an empty queue give the default record and the empty queue (the model only calls
+// them when `get_size(q) > 0`). write/writeln print to the run's output.
+//
+// Besides, tests use the nominal variant (remove_fault_transitions: an IR transform dropping
+// the transitions of the hand-added @fault ports), whose behaviour the translation should have.
 #pragma once
 
 #include <compare>
