@@ -1,0 +1,97 @@
+// The watchdog's properties (tests/taste2bip/watchdog/watchdog.mtl) answered by statistical
+// model checking on the adapted original (watchdog_model.h). The smcbip tool cannot register
+// the model's extern functions, so the queries go through smc::check_properties, which takes
+// extern functions only from a model entry (engines::PluginEntry): here the interpreted model of
+// the same system with the watchdog externs, not generated code. (`smcbip check` on the
+// original stops at its `@cpp(src=...)`: "extern source .../ext-cpp/ExternInterfaceViewFcns.cpp:
+// no such file"; the data holds no C++.)
+//
+// Statistics: PESTIM with delta = 0.02 and alpha = 0.01, so N = ceil(ln(2/alpha) / (2 delta^2))
+// = 6,623 runs per query and each estimate is within 0.02 of the true probability with
+// probability 0.99 (Okamoto's bound); seeds are fixed, so a given build passes or fails for good.
+// Answers recorded (seed 20261125, with the fault): (i) 1 [0.98, 1]; (ii) 1 [0.98, 1];
+// (iii) 0 [0, 0.02]. Nominal (seed 20261126): no stop 0 [0, 0.02]; (i) 1 [0.98, 1]. The true
+// values are 1 and 0 by the model's structure (derived in watchdog.mtl), so each assertion
+// below allows the estimate its delta.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "engines/plugin.h"
+#include "smc/smc.h"
+#include "tests/taste2bip/shared_data.h"
+#include "tests/taste2bip/watchdog_model.h"
+
+namespace smcbip::taste2bip::test {
+namespace {
+
+constexpr double kDelta = 0.02, kAlpha = 0.01;
+
+/// The model entry smc runs: plain function pointers, so the model is reached through a static.
+const engines::Model* checked_model = nullptr;
+const engines::Model& entry_model() { return *checked_model; }
+void entry_externs(engines::Externs& externs) { add_watchdog_externs(externs); }
+
+/// The answers to `queries` (a property file's text) on the original, nominal or not.
+std::vector<smc::QueryResult> answers(const std::string& queries, bool nominal,
+                                      std::uint64_t seed) {
+  std::string why;
+  std::optional<bipc::ir::System> system = load_watchdog_original(why);
+  EXPECT_TRUE(system) << why;
+  if (!system) return {};
+  if (nominal) remove_fault_transitions(*system);
+  monitors::ParsedProperties parsed = monitors::parse_properties(queries, "watchdog.mtl");
+  if (parsed.ok()) monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
+  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
+  if (!parsed.ok()) return {};
+  const engines::InterpretedModel model(*system);
+  checked_model = &model;
+  engines::PluginEntry entry;
+  entry.model = &entry_model;
+  entry.register_externs = &entry_externs;
+  smc::CheckOptions options;
+  options.method = smc::Method::Pestim;
+  options.delta = kDelta;
+  options.alpha = kAlpha;
+  options.seed = seed;
+  options.threads = 2;
+  options.compiled = &entry;
+  std::vector<smc::QueryResult> results = smc::check_properties(*system, parsed.file, options);
+  checked_model = nullptr;
+  for (const smc::QueryResult& r : results) {
+    EXPECT_EQ(r.error, "");
+    EXPECT_EQ(r.samples, smc::chernoff_samples(kDelta, kAlpha));
+    EXPECT_EQ(r.undecided, 0u) << r.why_undecided.first_error;
+    std::cerr << "query " << r.query + 1 << ": " << r.estimate << " [" << r.ci.low << ", "
+              << r.ci.high << "] from " << r.samples << " runs\n";
+  }
+  return results;
+}
+
+TEST(WatchdogProperties, TheOriginalAnswersItsPropertyFile) {
+  WATCHDOG_SKIP_WITHOUT_DATA();
+  const std::string file =
+      file_text(std::filesystem::path(SMCBIP_SOURCE_DIR) / "tests/taste2bip/watchdog/watchdog.mtl");
+  ASSERT_FALSE(file.empty());
+  const std::vector<smc::QueryResult> r = answers(file, /*nominal=*/false, 20261125);
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_GE(r[0].estimate, 1 - kDelta) << "(i) a command missed the motors' deadline";
+  EXPECT_GE(r[1].estimate, 1 - kDelta) << "(ii) a lost heartbeat without a stop in 110 ms";
+  EXPECT_LE(r[2].estimate, kDelta) << "(iii) the stop within 100 ms of the first fault";
+}
+
+TEST(WatchdogProperties, WithoutALostHeartbeatNoStopIsSent) {
+  WATCHDOG_SKIP_WITHOUT_DATA();
+  const std::vector<smc::QueryResult> r = answers(
+      "P=? [ F[0,1000] BLSClient.l4 ]\n"
+      "P=? [ G[0,1000] (fired(JoystickDriver2CmdDispatcher_cmd) -> "
+      "F[0,10] fired(BLSClient_mot_cmd2BLSClient)) ]\n",
+      /*nominal=*/true, 20261126);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_LE(r[0].estimate, kDelta) << "the watchdog stopped the rover without a fault";
+  EXPECT_GE(r[1].estimate, 1 - kDelta);
+}
+
+}  // namespace
+}  // namespace smcbip::taste2bip::test
