@@ -78,10 +78,16 @@ class TraceExplorer {
           erased_slots_.push_back(layout_.atom_data[a] + d);
         }
       }
+      // taste2bip's SDL atoms keep their state marked during a transition and take the token
+      // of `ready`: the state is entered when the token comes back.
+      std::size_t ready = kNoPlace;
+      for (bipc::ir::Index p = 0; p < type.places.size(); ++p) {
+        if (type.places[p] == "ready") ready = layout_.atom_places[a] + p;
+      }
       for (bipc::ir::Index p = 0; p < type.places.size(); ++p) {
         const auto it = observation.places.find(path + "." + type.places[p]);
         if (it != observation.places.end()) {
-          place_labels_.emplace_back(layout_.atom_places[a] + p, it->second);
+          place_labels_.push_back({layout_.atom_places[a] + p, ready, it->second});
         }
       }
     }
@@ -99,8 +105,9 @@ class TraceExplorer {
       const auto it = port_labels_.find(atom_port);
       if (it != port_labels_.end()) shown.push_back(it->second);
     }
-    for (const auto& [place, label] : place_labels_) {
-      if (after.marking[place] && !before.marking[place]) entered.push_back(label);
+    for (const PlaceLabel& l : place_labels_) {
+      const bool back = l.ready != kNoPlace && after.marking[l.ready] && !before.marking[l.ready];
+      if (after.marking[l.place] && (!before.marking[l.place] || back)) entered.push_back(l.label);
     }
     std::sort(shown.begin(), shown.end());
     std::sort(entered.begin(), entered.end());
@@ -169,7 +176,12 @@ class TraceExplorer {
   TraceBounds bounds_;
   std::unique_ptr<engines::Runtime> runtime_;
   std::map<std::pair<bipc::ir::Index, bipc::ir::Index>, std::string> port_labels_;
-  std::vector<std::pair<std::size_t, std::string>> place_labels_;
+  static constexpr std::size_t kNoPlace = static_cast<std::size_t>(-1);
+  struct PlaceLabel {
+    std::size_t place = 0, ready = kNoPlace;  // in RunState::marking
+    std::string label;
+  };
+  std::vector<PlaceLabel> place_labels_;
   std::vector<std::size_t> erased_slots_;  // in RunState::data
   TraceSet out_;
 };

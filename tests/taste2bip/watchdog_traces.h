@@ -21,7 +21,9 @@ struct WatchdogObservation {
   /// port) fires one of them shows its label.
   std::map<std::string, std::string> ports;
   /// Places, "atom.place": a step after which the place is marked and was not before shows its
-  /// label (an atom entering an SDL state).
+  /// label (an atom entering an SDL state); in an atom with a place `ready` (taste2bip's SDL
+  /// atoms, whose state stays marked while a transition runs), also a step that marks `ready`
+  /// again.
   std::map<std::string, std::string> places;
   /// Data, "atom.data" or "*.data" (every atom's), reset to zero after every step: for data
   /// that nothing reads but their own update (counters of dropped calls), which would make the
