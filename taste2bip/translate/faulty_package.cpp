@@ -1,6 +1,6 @@
 #include "taste2bip/translate/detail/faulty_package.h"
 
-#include <cctype>
+#include <algorithm>
 #include <sstream>
 
 namespace smcbip::taste2bip::detail {
@@ -14,20 +14,9 @@ std::string first_word(const std::string& line) {
   return word;
 }
 
-bool is_fault_port(const FunctionSignature& f, const std::string& line) {
-  for (const SignalInterface& p : f.provided) {
-    std::string lower;
-    for (char c : p.name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (lower.rfind("fault", 0) == 0 && line.find(" " + p.name + "_in(") != std::string::npos) {
-      return true;
-    }
-  }
-  return false;
-}
-
 /// The declarations of a nominal atom (its lines are written one declaration each), renamed,
 /// with an initial transition to its first place and no other.
-std::string replica(const FunctionSignature& f, const AtomType& atom) {
+std::string replica(const AtomType& atom) {
   std::istringstream in(atom.text);
   std::string line, out, first_place;
   while (std::getline(in, line)) {
@@ -36,7 +25,6 @@ std::string replica(const FunctionSignature& f, const AtomType& atom) {
       out += "  atom type " + atom.name + "_faulty()\n";
     } else if (word == "data" || word == "clock" || word == "port" || word == "place" ||
                word == "export" || word.rfind("@", 0) == 0) {
-      if (word == "export" && is_fault_port(f, line)) out += "    @fault\n";
       out += line + "\n";
       if (word == "place" && first_place.empty()) {
         std::istringstream names(line.substr(line.find("place") + 5));
@@ -53,17 +41,18 @@ std::string replica(const FunctionSignature& f, const AtomType& atom) {
 }  // namespace
 
 std::string faulty_package(const std::string& name, const std::string& declarations,
-                           const std::vector<FunctionSignature>& functions,
-                           const std::vector<AtomType>& atoms) {
+                           const std::vector<AtomType>& atoms,
+                           const std::vector<AtomType>& faulty) {
   std::string text =
       "// The faulty package of the FDIR workflow, written by taste2bip: each\n"
       "// function's atom with its interface, data and places, to be given its\n"
       "// faulty behaviour.\n";
   text += "package " + name + "_faulty\n" + declarations;
   for (const AtomType& atom : atoms) {
-    for (const FunctionSignature& f : functions) {
-      if (f.name == atom.name) text += replica(f, atom);
-    }
+    const auto given = std::find_if(faulty.begin(), faulty.end(), [&](const AtomType& a) {
+      return a.name == atom.name + "_faulty";
+    });
+    text += given != faulty.end() ? given->text : replica(atom);
   }
   return text + "end\n";
 }

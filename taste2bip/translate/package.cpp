@@ -79,6 +79,16 @@ std::optional<AtomType> function_atom(const Design& design, const FunctionSignat
   return sdl_atom(f, *found.process, found.procedures, design.data, diags);
 }
 
+/// The faulty package's atom of an SDL function (its fault signals as fault transitions), or
+/// nullopt for the other functions, whose faulty atom repeats the nominal one's declarations.
+std::optional<AtomType> faulty_sdl_atom(const Design& design, const FunctionSignature& f,
+                                        bipc::Diagnostics& diags) {
+  if (user_behaviour(design, f) != nullptr || !same_name(f.language, "SDL")) return std::nullopt;
+  const FoundProcess found = find_process(design.sdl, f.source->name);
+  if (found.process == nullptr) return std::nullopt;
+  return sdl_fault_atom(f, *found.process, found.procedures, design.data, diags);
+}
+
 bool distinct_instances(const std::vector<FunctionSignature>& functions, bipc::Diagnostics& diags) {
   std::set<std::string> names;
   bool ok = true;
@@ -150,10 +160,11 @@ std::optional<Packages> translate(const Design& design, const PackageOptions& op
   if (diags.error_count() > errors || !distinct_instances(functions, diags)) return std::nullopt;
 
   PackageParts parts;
-  std::vector<AtomType> atoms;
+  std::vector<AtomType> atoms, faulty;
   for (const FunctionSignature& f : functions) {
     auto atom = function_atom(design, f, diags);
     if (!atom) continue;
+    if (auto fault_atom = faulty_sdl_atom(design, f, diags)) faulty.push_back(*fault_atom);
     for (const std::string& t : atom->extern_types) {
       parts.extern_types.add(t, "  extern data type " + t + "\n");
     }
@@ -180,7 +191,7 @@ std::optional<Packages> translate(const Design& design, const PackageOptions& op
   Packages out;
   out.nominal = nominal_text(options, parts);
   out.faulty = detail::faulty_package(
-      options.name, parts.extern_types.text() + parts.port_types.text(), functions, atoms);
+      options.name, parts.extern_types.text() + parts.port_types.text(), atoms, faulty);
   out.requirements = detail::requirements_package(options.name);
   out.report = report_text(design, view, parts);
   return out;

@@ -111,6 +111,13 @@ std::optional<AtomType> Translator::run() {
   for (const sdl::CompositeState& c : process_.body.composite_states) {
     error(c.at, "nested state '" + c.name + "' is not translated");
   }
+  if (faults_only_) {
+    for (const SignalInterface& p : function_.provided) {
+      if (!is_fault_interface(p)) continue;
+      reserve(p.name + "_fault");
+      ports_text_ += "    @fault\n    port Port " + p.name + "_fault()\n";
+    }
+  }
   declare_timers();
   declare_variables();
   for (const auto& [name, p] : procedures_) declare_procedure(*p);
@@ -136,7 +143,7 @@ std::optional<AtomType> Translator::run() {
   for (const std::string& state : std::vector<std::string>(state_order_)) translate_state(state);
   if (diags_.error_count() > errors_before_) return std::nullopt;
   AtomType atom;
-  atom.name = function_.name;
+  atom.name = faults_only_ ? function_.name + "_faulty" : function_.name;
   atom.text = text();
   atom.extern_types = extern_types_;
   atom.extern_functions = extern_functions_;
@@ -145,7 +152,8 @@ std::optional<AtomType> Translator::run() {
 }
 
 std::string Translator::text() const {
-  std::string out = "  atom type " + function_.name + "()\n";
+  std::string out =
+      "  atom type " + (faults_only_ ? function_.name + "_faulty" : function_.name) + "()\n";
   out += interface_declarations(function_);
   out += data_text_ + ports_text_;
   for (const std::string& port : branch_ports_) out += "    port Port " + port + "()\n";
@@ -164,6 +172,19 @@ std::optional<AtomType> sdl_atom(const FunctionSignature& function, const sdl::P
                                  const asn1::DataView& data, bipc::Diagnostics& diags) {
   detail::Translator translator(function, process, procedures, data, diags);
   return translator.run();
+}
+
+std::optional<AtomType> sdl_fault_atom(const FunctionSignature& function,
+                                       const sdl::Process& process,
+                                       const std::vector<const sdl::Procedure*>& procedures,
+                                       const asn1::DataView& data, bipc::Diagnostics& diags) {
+  detail::Translator translator(function, process, procedures, data, diags);
+  translator.faults_only_ = true;
+  return translator.run();
+}
+
+bool is_fault_interface(const SignalInterface& provided) {
+  return detail::folded(provided.name).rfind("fault", 0) == 0;
 }
 
 }  // namespace smcbip::taste2bip

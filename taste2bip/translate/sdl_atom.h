@@ -33,6 +33,19 @@ std::optional<AtomType> sdl_atom(const FunctionSignature& function, const sdl::P
                                  const std::vector<const sdl::Procedure*>& procedures,
                                  const asn1::DataView& data, bipc::Diagnostics& diags);
 
+/// The faulty package's atom `<F>_faulty` of `function` (FDIR): the interface, data and states of
+/// sdl_atom's and its start transition, and as its only behaviour the inputs of the provided
+/// interfaces named `fault...` (case ignored) as fault transitions: on the internal port
+/// `<p>_fault`, marked `@fault` and lazy (a fault comes when it comes), with no caller and no
+/// return. The user adds the other faulty behaviour. Errors as sdl_atom.
+std::optional<AtomType> sdl_fault_atom(const FunctionSignature& function,
+                                       const sdl::Process& process,
+                                       const std::vector<const sdl::Procedure*>& procedures,
+                                       const asn1::DataView& data, bipc::Diagnostics& diags);
+
+/// Whether a provided interface is a fault signal of the FDIR workflow: named `fault...`.
+bool is_fault_interface(const SignalInterface& provided);
+
 /// The signature of a process declared inside an SDL system (the OpenGEODE test designs have
 /// no interface view): signals from the environment to it are sporadic provided interfaces,
 /// signals from it to the environment sporadic required ones, with the parameter types of

@@ -43,14 +43,22 @@ void Translator::translate_state(const std::string& state) {
   }
   for (const auto& [key, h] : handled) {
     const std::string& name = key;  // clang 14 cannot capture a structured binding
-    const bool known = timers_.count(name) > 0 ||
-                       std::any_of(function_.provided.begin(), function_.provided.end(),
-                                   [&](const SignalInterface& p) { return folded(p.name) == name; });
-    if (!known) error(h.signal->at, "input '" + h.signal->name + "' names no provided interface "
-                                    "or timer of " + function_.name);
+    const bool known =
+        timers_.count(name) > 0 ||
+        std::any_of(function_.provided.begin(), function_.provided.end(),
+                    [&](const SignalInterface& p) { return folded(p.name) == name; });
+    if (!known)
+      error(h.signal->at, "input '" + h.signal->name +
+                              "' names no provided interface "
+                              "or timer of " +
+                              function_.name);
   }
   for (const SignalInterface& p : function_.provided) {
     auto h = handled.find(folded(p.name));
+    if (faults_only_) {
+      if (is_fault_interface(p) && h != handled.end()) fault_transition(at, p, *h->second.input);
+      continue;
+    }
     if (h != handled.end()) {
       input_transition(at, p, h->second.input, h->second.signal);
     } else if (any_input != nullptr) {
@@ -61,6 +69,7 @@ void Translator::translate_state(const std::string& state) {
       input_transition(at, p, nullptr, nullptr);
     }
   }
+  if (faults_only_) return;  // timers and continuous signals are nominal behaviour
   for (const auto& [name, base] : timers_) {
     auto h = handled.find(name);
     timer_transition(at, base, h != handled.end() ? h->second.input : any_input);
@@ -80,8 +89,8 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
       return;
     }
     for (std::size_t k = 0; k < signal->parameters.size(); ++k) {
-      sdl::Expr name{sdl::Expr::Kind::Name, sdl::Operator::None, signal->parameters[k], {}, {},
-                     signal->at};
+      sdl::Expr name{
+          sdl::Expr::Kind::Name, sdl::Operator::None, signal->parameters[k], {}, {}, signal->at};
       std::optional<Ref> variable = reference(name);
       if (!variable) return;
       const Ref data = interface_ref(p, p.parameters[k]);
@@ -100,16 +109,31 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
     std::optional<Scalar> guard = condition(*input->enabling, "an enabling condition");
     if (!guard) return;
     step.guard = guard->text;
-    notes_.push_back("'" + p.name + "' waits in state " + state + " while its enabling "
+    notes_.push_back("'" + p.name + "' waits in state " + state +
+                     " while its enabling "
                      "condition is false");
   }
   chain_end(actions(input->transition.actions, 0, std::move(step), chain), input->at);
 }
 
+void Translator::fault_transition(const std::string& state, const SignalInterface& p,
+                                  const sdl::Input& input) {
+  Chain chain{state, state + "/" + p.name + "/fault", nullptr, {}};
+  Step step{false, p.name + "_fault", state, "", {}};
+  if (input.enabling) {
+    std::optional<Scalar> guard = condition(*input.enabling, "an enabling condition");
+    if (!guard) return;
+    step.guard = guard->text;
+  }
+  chain_end(actions(input.transition.actions, 0, std::move(step), chain), input.at);
+}
+
 void Translator::timer_transition(const std::string& state, const std::string& timer,
                                   const sdl::Input* input) {
   Chain chain{state, state + "/" + timer, nullptr, {}};
-  Step step{false, timer + "_expired", state,
+  Step step{false,
+            timer + "_expired",
+            state,
             timer + "_armed && " + timer + "_clock >= " + timer + "_value",
             {timer + "_armed = false;"}};
   if (input == nullptr) {

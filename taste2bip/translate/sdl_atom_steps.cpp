@@ -20,6 +20,14 @@ bool Translator::is_return_port(const std::string& port) const {
   return false;
 }
 
+bool Translator::is_fault_port(const std::string& port) const {
+  if (!faults_only_) return false;
+  for (const SignalInterface& p : function_.provided) {
+    if (is_fault_interface(p) && port == p.name + "_fault") return true;
+  }
+  return false;
+}
+
 bool Translator::is_state_place(const std::string& place) const {
   for (const auto& [name, state] : states_) {
     if (state == place) return true;
@@ -55,7 +63,8 @@ void Translator::close(Step step, const std::string& to) {
     if (!step.guard.empty()) text += " provided (" + step.guard + ")";
     // A return (or a synchronous call's result) is lazy: the interface's wrapper, which joins
     // it, gives it its date (at once, or after the execution time of --wcet).
-    if (!is_return_port(step.port)) text += " eager";
+    // A fault is lazy too: it comes when it comes.
+    if (!is_return_port(step.port) && !is_fault_port(step.port)) text += " eager";
   }
   if (!step.statements.empty()) {
     text += " do {";

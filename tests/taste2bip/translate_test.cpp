@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "bipc/bipc.h"
+#include "taste2bip/sdl/sdl_reader.h"
 #include "taste2bip/translate/bip_types.h"
 #include "taste2bip/translate/package.h"
 #include "taste2bip/translate/signature.h"
@@ -31,6 +33,7 @@ const char* const kTypes = R"(M DEFINITIONS AUTOMATIC TAGS ::= BEGIN
   Angle ::= SEQUENCE { rad T-Double }
   Motion2D ::= SEQUENCE { translation T-Double, rotation T-Double, heading Angle }
   Mode ::= ENUMERATED { idle, run(5) }
+  Count ::= INTEGER (0..255)
   Pick ::= CHOICE { a BOOLEAN, b Mode }
   Opt ::= SEQUENCE { x INTEGER (0..9) OPTIONAL, y BOOLEAN }
   Fixed ::= SEQUENCE (SIZE (2)) OF INTEGER (0..3)
@@ -185,6 +188,62 @@ TEST(TranslateDesign, AnUnconnectedRequiredInterfaceIsReported) {
   EXPECT_NE(packages->report.find("Caller.put: connected to nothing"), std::string::npos)
       << packages->report;
   EXPECT_EQ(bipc_diagnostics(packages->nominal, "taste"), "");
+}
+
+}  // namespace
+}  // namespace smcbip::taste2bip
+
+namespace smcbip::taste2bip {
+namespace {
+
+/// What bipc's front end says of a package without a root ("" when it checks).
+std::string package_diagnostics(const std::string& text) {
+  bipc::LoadedModel model;
+  bipc::Diagnostics diags;
+  model.packages.push_back(bipc::parse_package(text, model.files.add("faulty.bip"), diags));
+  model.main = model.packages.back().get();
+  if (!diags.has_errors()) bipc::check(model, diags);
+  return diags.has_errors() ? diags.format(model.files) : "";
+}
+
+TEST(TranslateFaults, FaultSignalsOfSdlFunctionsBecomeFaultTransitionsOfTheFaultyPackage) {
+  bipc::Diagnostics diags;
+  Design design;
+  design.data = resolved(kTypes, diags);
+  Function sensor{"Sensor", "SDL", {}, {}, {}, std::nullopt, false, {}};
+  Interface tick{"tick", InterfaceKind::Cyclic, {}, 100.0, 100.0, 0.0, std::nullopt, {}, {}, {}};
+  Interface stuck{"fault_stuck", InterfaceKind::Sporadic};
+  stuck.queue_size = 1;
+  sensor.provided = {tick, stuck};
+  design.view.functions = {sensor};
+  design.sdl.push_back(sdl::read_sdl(R"(process Sensor;
+    dcl reads Count := 0;
+    START;
+        NEXTSTATE Ok;
+    state Ok;
+        input tick;
+            task reads := (reads + 1) mod 256;
+            NEXTSTATE Ok;
+        input fault_stuck;
+            NEXTSTATE Stuck;
+    endstate;
+    state Stuck;
+    endstate;
+endprocess Sensor;)",
+                                     1, diags));
+  ASSERT_FALSE(diags.has_errors()) << diags.format({});
+  const auto packages = translate(design, {}, diags);
+  ASSERT_TRUE(packages) << diags.format({});
+  const std::string& faulty = packages->faulty;
+  EXPECT_EQ(package_diagnostics(faulty), "") << faulty;
+  EXPECT_NE(faulty.find("atom type Sensor_faulty()"), std::string::npos) << faulty;
+  EXPECT_NE(faulty.find("@fault\n    port Port fault_stuck_fault()"), std::string::npos) << faulty;
+  // Lazy (no urgency): a fault comes when it comes; the state's place and the ready token move.
+  EXPECT_NE(faulty.find("on fault_stuck_fault from Ok, ready to Stuck, ready\n"), std::string::npos)
+      << faulty;
+  EXPECT_EQ(faulty.find("on tick_in"), std::string::npos) << faulty;  // nominal behaviour left out
+  // The nominal package keeps the fault signal an ordinary interface.
+  EXPECT_NE(packages->nominal.find("on fault_stuck_in from Ok, ready"), std::string::npos);
 }
 
 }  // namespace

@@ -13,10 +13,10 @@
 namespace smcbip::taste2bip::detail {
 
 /// `declarations` are the nominal package's extern and port types, copied so that the faulty
-/// package stands alone. The ports of provided interfaces named `fault...` are marked `@fault`.
+/// package stands alone. An SDL function's faulty atom is given (`faulty`, sdl_fault_atom: its
+/// fault signals as fault transitions); the others repeat their nominal atom's declarations.
 std::string faulty_package(const std::string& name, const std::string& declarations,
-                           const std::vector<FunctionSignature>& functions,
-                           const std::vector<AtomType>& atoms);
+                           const std::vector<AtomType>& atoms, const std::vector<AtomType>& faulty);
 
 std::string requirements_package(const std::string& name);
 

@@ -164,6 +164,8 @@ class Translator {
   void timer_transition(const std::string& state, const std::string& timer,
                         const sdl::Input* input);
   void continuous_transitions(const std::string& state, const std::string& place);
+  void fault_transition(const std::string& state, const SignalInterface& p,
+                        const sdl::Input& input);
   void chain_end(const Outcome& outcome, const bipc::Location& at);
   void add_state(const std::string& name);
   void scan_nextstates(const std::vector<sdl::Action>& list);
@@ -200,6 +202,9 @@ class Translator {
   std::map<std::string, std::string> origin_of_;
   bool is_state_place(const std::string& place) const;
   bool is_return_port(const std::string& port) const;
+  bool is_fault_port(const std::string& port) const;
+  // The faulty package's atom (sdl_fault_atom): faults only, under its own name.
+  bool faults_only_ = false;
   std::string marking_from(const Step& step, const std::string& to) const;
   std::string marking_to(const Step& step, const std::string& to) const;
   std::vector<std::string> notes_, extern_types_, extern_functions_;
