@@ -63,6 +63,41 @@ bool is_arithmetic(sdl::Operator op) {
          op == sdl::Operator::Divide || op == sdl::Operator::Mod || op == sdl::Operator::Rem;
 }
 
+bool numeric(const std::string& kind) { return kind == "int" || kind == "float"; }
+
+/// What the operands of `op` must be when kinds `a` and `b` do not fit it, else empty. Unknown
+/// kinds are left to the front end.
+std::string operand_problem(sdl::Operator op, const std::string& a, const std::string& b) {
+  using O = sdl::Operator;
+  if (a.empty() || b.empty()) return "";
+  switch (op) {
+    case O::Mod:
+    case O::Rem:
+      return a == "int" && b == "int" ? "" : "integers";
+    case O::Plus:
+    case O::Minus:
+    case O::Times:
+    case O::Divide:
+    case O::Less:
+    case O::LessEqual:
+    case O::Greater:
+    case O::GreaterEqual:
+      return numeric(a) && numeric(b) ? "" : "numbers";
+    case O::Equal:
+    case O::NotEqual:
+      return a == b || (numeric(a) && numeric(b)) ? "" : "values of one type";
+    case O::And:
+    case O::Or:
+    case O::Xor:
+    case O::Implies:
+    case O::AndThen:
+    case O::OrElse:
+      return a == "bool" && b == "bool" ? "" : "booleans";
+    default:
+      return "";
+  }
+}
+
 }  // namespace
 
 std::optional<Ref> Translator::reference(const sdl::Expr& e) {
@@ -183,7 +218,13 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
     case K::Unary: {
       std::optional<Scalar> v = scalar(e.operands[0], hint);
       if (!v) return std::nullopt;
-      if (e.op == sdl::Operator::Not) return Scalar{"!(" + v->text + ")", "bool"};
+      const bool is_not = e.op == sdl::Operator::Not;
+      if (!v->kind.empty() && (is_not ? v->kind != "bool" : !numeric(v->kind))) {
+        error(e.at, std::string(is_not ? "'not' takes a boolean" : "'-' takes a number") +
+                        ", not a " + v->kind);
+        return std::nullopt;
+      }
+      if (is_not) return Scalar{"!(" + v->text + ")", "bool"};
       return Scalar{"-(" + v->text + ")", v->kind};
     }
     case K::Binary:
@@ -262,6 +303,11 @@ std::optional<Scalar> Translator::binary(const sdl::Expr& e) {
   std::optional<Scalar> a = scalar(e.operands[0], type_of(e.operands[1]));
   std::optional<Scalar> b = scalar(e.operands[1], type_of(e.operands[0]));
   if (!a || !b) return std::nullopt;
+  if (const std::string want = operand_problem(op, a->kind, b->kind); !want.empty()) {
+    error(e.at, std::string("'") + sdl::spelling(op) + "' takes " + want + ", not " + a->kind +
+                    " and " + b->kind);
+    return std::nullopt;
+  }
   if (op == sdl::Operator::Implies)
     return Scalar{"(!(" + a->text + ") || " + b->text + ")", "bool"};
   std::string kind = "bool";
@@ -282,6 +328,10 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
   if (!structured) {
     std::optional<Scalar> x = scalar(a, tb), y = scalar(b, ta);
     if (!x || !y) return std::nullopt;
+    if (!operand_problem(sdl::Operator::Equal, x->kind, y->kind).empty()) {
+      error(at, "a " + x->kind + " compared with a " + y->kind);
+      return std::nullopt;
+    }
     return Scalar{"(" + x->text + op + y->text + ")", "bool"};
   }
   std::optional<Ref> x = reference(a), y = reference(b);
