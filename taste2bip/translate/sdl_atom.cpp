@@ -119,6 +119,7 @@ std::optional<AtomType> Translator::run() {
     }
   }
   declare_timers();
+  declare_context();
   declare_variables();
   for (const auto& [name, p] : procedures_) declare_procedure(*p);
   collect_states();

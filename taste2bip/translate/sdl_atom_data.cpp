@@ -145,7 +145,7 @@ Ref Translator::interface_ref(const SignalInterface& i, const SignalParameter& p
   if (const auto id = find_type_spelled(data_, p.asn1_type)) {
     type = definition(data_, data_.type(*id)->type);
   }
-  return Ref{i.name + "_" + p.name, p.leaves, type};
+  return Ref{i.data_of(p), p.leaves, type};
 }
 
 }  // namespace smcbip::taste2bip::detail

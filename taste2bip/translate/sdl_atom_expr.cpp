@@ -113,6 +113,7 @@ std::optional<Ref> Translator::reference(const sdl::Expr& e) {
     return std::nullopt;
   }
   if (e.kind == K::Field) {
+    if (std::optional<Ref> context = context_field(e)) return context;
     std::optional<Ref> base = reference(e.operands[0]);
     return base ? field(*base, e.text, e.at) : std::nullopt;
   }

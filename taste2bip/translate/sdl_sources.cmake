@@ -5,6 +5,7 @@ list(APPEND TASTE2BIP_SOURCES
   translate/sdl_atom_assign.cpp
   translate/sdl_atom_builtins.cpp
   translate/sdl_atom_calls.cpp
+  translate/sdl_atom_context.cpp
   translate/sdl_atom_data.cpp
   translate/sdl_atom_decision.cpp
   translate/sdl_atom_expr.cpp

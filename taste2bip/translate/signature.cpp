@@ -1,6 +1,7 @@
 #include "taste2bip/translate/signature.h"
 
 #include <algorithm>
+#include <set>
 
 #include "taste2bip/names.h"
 
@@ -61,15 +62,33 @@ std::string data_declarations(const SignalInterface& i) {
   return text;
 }
 
+/// Data and ports share the atom's names: a parameter named `result` of interface `get` would
+/// give data `get_result`, the name of get's result port. Such an interface's data take the
+/// prefix `<name>_data` instead.
+void keep_data_apart_from_ports(FunctionSignature& f) {
+  std::set<std::string> ports;
+  for (const SignalInterface& i : f.provided) {
+    ports.insert({i.name + "_in", i.name + "_return"});
+  }
+  for (const SignalInterface& i : f.required) ports.insert({i.name + "_out", i.name + "_result"});
+  for (auto* list : {&f.provided, &f.required}) {
+    for (SignalInterface& i : *list) {
+      const auto in = i.data_names(false), out = i.data_names(true);
+      const auto clash = [&](const std::string& n) { return ports.count(n) > 0; };
+      if (std::any_of(in.begin(), in.end(), clash) || std::any_of(out.begin(), out.end(), clash)) {
+        i.data_prefix = (i.data_prefix.empty() ? i.name : i.data_prefix) + "_data";
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> SignalInterface::data_names(bool out) const {
   std::vector<std::string> names;
   for (const SignalParameter& p : parameters) {
     if (p.out != out) continue;
-    for (const Leaf& leaf : p.leaves) {
-      names.push_back(leaf_name((data_prefix.empty() ? name : data_prefix) + "_" + p.name, leaf));
-    }
+    for (const Leaf& leaf : p.leaves) names.push_back(leaf_name(data_of(p), leaf));
   }
   return names;
 }
@@ -100,6 +119,7 @@ FunctionSignature function_signature(const InterfaceView& view, std::size_t inde
       if (p.name == out.required.back().name) out.required.back().data_prefix += "_ri";
     }
   }
+  keep_data_apart_from_ports(out);
   for (const ContextParameter& c : f.context) {
     if (c.type == "Timer") {
       out.context_timers.push_back(bip_identifier(c.name));

@@ -40,7 +40,8 @@ struct SignalParameter {
 struct SignalInterface {
   std::string name;  // as a BIP identifier
   /// What the names of its data start with: `name`, or for a required interface named like one
-  /// of the function's provided ones, `name` + `_ri` (TASTE allows both to share a name). Empty
+  /// of the function's provided ones, `name` + `_ri` (TASTE allows both to share a name), and
+  /// `_data` appended when a data name would be a port's (a parameter named `result`). Empty
   /// means `name`.
   std::string data_prefix;
   /// The kind of a provided interface; for a required one, the kind of the provided interface
@@ -50,6 +51,10 @@ struct SignalInterface {
   const Interface* source = nullptr;  // in the flattened view
   bipc::Location at;
 
+  /// The BIP data of parameter `p` (its leaves' names start with it): `<data_prefix>_<p>`.
+  std::string data_of(const SignalParameter& p) const {
+    return (data_prefix.empty() ? name : data_prefix) + "_" + p.name;
+  }
   bool synchronous() const {
     return kind == InterfaceKind::Protected || kind == InterfaceKind::Unprotected;
   }

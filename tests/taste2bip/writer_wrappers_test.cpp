@@ -1,8 +1,6 @@
 // The timing wrappers of TASTE interfaces, run by the engines: a cyclic interface starts at its
 // offset and then every period; a sporadic one queues calls up to its queue size, drops the
 // others, and starts at most once per MIAT, with the calls' data in order.
-#include "taste2bip/writer/wrappers.h"
-
 #include <gtest/gtest.h>
 
 #include <map>
@@ -11,6 +9,7 @@
 #include <vector>
 
 #include "engines/engines.h"
+#include "taste2bip/writer/wrappers.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::taste2bip {
@@ -25,8 +24,8 @@ class Recorder final : public engines::RunObserver {
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
     const bipc::ir::System& system = state.system();
     if (step.fired == engines::StepInfo::Fired::Interaction) {
-      dates[system.connectors[step.connector].path].push_back(
-          static_cast<double>(step.time) / static_cast<double>(kMs));
+      dates[system.connectors[step.connector].path].push_back(static_cast<double>(step.time) /
+                                                              static_cast<double>(kMs));
     }
     data.clear();
     for (bipc::ir::Index a = 0; a < system.atoms.size(); ++a) {
@@ -51,8 +50,7 @@ Recorder run(const std::string& package, const std::string& root, std::uint64_t 
   options.limit = steps;
   engines::Simulator simulator(*system, options, engines::Externs::with_builtins());
   std::ostringstream trace;
-  const engines::RunResult result =
-      simulator.run(0, engines::RunStreams{trace, trace}, &recorder);
+  const engines::RunResult result = simulator.run(0, engines::RunStreams{trace, trace}, &recorder);
   EXPECT_EQ(result.code, engines::kRunOk) << result.message << "\n" << trace.str();
   return recorder;
 }
@@ -95,14 +93,18 @@ std::string sporadic_design(int calls, std::uint32_t queue, int work) {
          sporadic_wrapper(wrapper, "CallV", "Call", value, queue) +
          "  atom type Caller()\n    clock t unit millisecond\n    data int v = 0\n"
          "    export port CallV call(v)\n    place calling\n    initial to calling do { t = 0; }\n"
-         "    on call from calling to calling provided (v < " + std::to_string(calls) +
+         "    on call from calling to calling provided (v < " +
+         std::to_string(calls) +
          " && t >= v) eager do { v = v + 1; }\n  end\n"
          "  atom type Worker()\n    clock t unit millisecond\n    data int v = 0\n"
          "    data int sum = 0\n    export port CallV start(v)\n    export port Call done()\n"
          "    place idle, busy\n    initial to idle\n"
          "    on start from idle to busy do { sum = sum * 10 + v + 1; t = 0; }\n"
-         "    on done from busy to idle provided (t >= " + std::to_string(work) + ")\n  end\n"
-         "  compound type Top()\n    component Caller c()\n    component " + wrapper +
+         "    on done from busy to idle provided (t >= " +
+         std::to_string(work) +
+         ")\n  end\n"
+         "  compound type Top()\n    component Caller c()\n    component " +
+         wrapper +
          " w(50, 10)\n    component Worker f()\n    connector Pass send(c.call, w.call)\n"
          "    connector Pass go(w.start, f.start)\n    connector Sync back(w.done, f.done)\n"
          "  end\nend\n";
@@ -112,7 +114,7 @@ TEST(TimingWrappers, SporadicQueuesDropsAndKeepsItsMiat) {
   const Recorder r = run(sporadic_design(3, 1, 0), "Top()", 30);
   EXPECT_EQ(r.dates.at("send"), (std::vector<double>{0, 1, 2}));
   EXPECT_EQ(r.dates.at("go"), (std::vector<double>{0, 50}));  // the second waits for the MIAT
-  EXPECT_EQ(r.data.at("w.dropped"), 1);                        // the third found the FIFO full
+  EXPECT_EQ(r.data.at("w.dropped"), 1);                       // the third found the FIFO full
   EXPECT_EQ(r.data.at("f.sum"), 12);  // the calls with 0, then 1: their data, in order
 }
 

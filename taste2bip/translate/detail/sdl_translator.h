@@ -91,6 +91,14 @@ class Translator {
   void declare_procedure(const sdl::Procedure& p);
   std::string text() const;
 
+  // Context parameters (sdl_atom_context.cpp): `<function>_ctxt.name`.
+  void declare_context();
+  std::optional<std::string> context_value(const Leaf& leaf, const std::string& text);
+  /// The context parameter `e` (a Field of `<function>_ctxt`) names; nullopt when `e` is not
+  /// such a field (or, with an error, names no context parameter).
+  std::optional<Ref> context_field(const sdl::Expr& e);
+  std::map<std::string, Ref> context_;  // folded name
+
   // Variables and values (sdl_atom_data.cpp).
   std::optional<std::vector<Leaf>> leaves_of_type(const std::string& type, const bipc::Location& at,
                                                   const asn1::Type** definition);
