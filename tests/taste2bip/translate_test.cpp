@@ -255,11 +255,14 @@ namespace {
 TEST(TranslateSignature, DataNamedLikeAPortTakeAnotherPrefix) {
   bipc::Diagnostics diags;
   Design design = small_design(diags, InterfaceKind::Protected);
-  design.view.functions[0].required[0].parameters[1].name = "result";  // get_result: a port
+  for (Function& f : design.view.functions) {  // an int `result`: data get_result, a port's name
+    Interface& get = f.name == "Caller" ? f.required[0] : f.provided[0];
+    get.parameters[1].name = "result";
+    get.parameters[1].type = "Mode";
+  }
   const FunctionSignature caller = function_signature(design.view, 0, design.data, diags);
   EXPECT_EQ(caller.required[0].data_names(false), std::vector<std::string>{"get_data_x"});
-  EXPECT_EQ(caller.required[0].data_names(true)[0], "get_data_result_translation");
-  design.view.functions[1].provided[0].parameters[1].name = "result";
+  EXPECT_EQ(caller.required[0].data_names(true), std::vector<std::string>{"get_data_result"});
   const auto packages = translate(design, {}, diags);
   ASSERT_TRUE(packages) << diags.format({});
   EXPECT_EQ(bipc_diagnostics(packages->nominal, "taste"), "") << packages->nominal;
