@@ -2,6 +2,7 @@
 // timers, variables, inlined procedures' data) and the assembly of its text.
 #include "taste2bip/translate/sdl_atom.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "taste2bip/names.h"
@@ -32,6 +33,14 @@ Translator::Translator(const FunctionSignature& function, const sdl::Process& pr
   for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)] = p;
   for (const sdl::Procedure& p : process.body.procedures) procedures_[folded(p.name)] = &p;
   errors_before_ = diags.error_count();
+}
+
+void Translator::need_function(const std::string& prototype) {
+  const std::string line = "extern function " + prototype;
+  if (std::find(extern_functions_.begin(), extern_functions_.end(), line) ==
+      extern_functions_.end()) {
+    extern_functions_.push_back(line);
+  }
 }
 
 void Translator::error(const bipc::Location& at, const std::string& message) {
@@ -92,10 +101,10 @@ void Translator::declare_procedure(const sdl::Procedure& p) {
     std::optional<Ref> ref = declare_sdl_variable(result, prefix);
     if (ref) scope[folded(p.return_name)] = Binding{*ref, 0};
   }
-  if (!p.body.procedures.empty() || !p.body.composite_states.empty() ||
-      !p.body.states.empty() || !p.body.timers.empty()) {
+  if (!p.body.procedures.empty() || !p.body.composite_states.empty() || !p.body.states.empty() ||
+      !p.body.timers.empty()) {
     error(p.at, "procedure '" + p.name +
-                           "' has states, timers or nested procedures, which are not translated");
+                    "' has states, timers or nested procedures, which are not translated");
   }
 }
 
@@ -138,6 +147,7 @@ std::optional<AtomType> Translator::run() {
   atom.name = function_.name;
   atom.text = text();
   atom.extern_types = extern_types_;
+  atom.extern_functions = extern_functions_;
   atom.notes = notes_;
   return atom;
 }

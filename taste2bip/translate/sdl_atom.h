@@ -19,6 +19,9 @@ struct AtomType {
   std::string text;  // `atom type NAME() ... end`, indented as a package member
   /// Package-level declarations the atom needs (extern data types), each once.
   std::vector<std::string> extern_types;
+  /// Package-level prototypes of the builtin functions the atom calls (`printf` for writeln,
+  /// `abs`, `max`), each once: `extern function printf(string, int)`.
+  std::vector<std::string> extern_functions;
   /// What the translation assumed or left out, one line each, for the report.
   std::vector<std::string> notes;
 };

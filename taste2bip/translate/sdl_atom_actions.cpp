@@ -44,8 +44,7 @@ std::optional<Step> Translator::join_falls(std::vector<Step> falls, Chain& chain
   return open(joined);
 }
 
-bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out,
-                        bool& ended) {
+bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended) {
   using K = sdl::Action::Kind;
   switch (a.kind) {
     case K::Task:
@@ -148,8 +147,8 @@ bool Translator::for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Ou
       if (values.size() >= kMaxIterations) break;
       values.push_back(Binding{std::nullopt, v});
     }
-    if (values.size() >= kMaxIterations && low + by * static_cast<std::int64_t>(kMaxIterations) <
-                                                 high) {
+    if (values.size() >= kMaxIterations &&
+        low + by * static_cast<std::int64_t>(kMaxIterations) < high) {
       error(it.at, "a loop of more than 64 iterations is not unrolled");
       return false;
     }
@@ -164,7 +163,8 @@ bool Translator::for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Ou
     }
     for (std::int64_t k = 0; seq->type && seq->type->kind == asn1::TypeKind::SequenceOf; ++k) {
       bool found = false;
-      for (const Leaf& l : seq->leaves) found = found || (!l.path.empty() && l.path[0] == std::to_string(k));
+      for (const Leaf& l : seq->leaves)
+        found = found || (!l.path.empty() && l.path[0] == std::to_string(k));
       if (!found) break;
       std::optional<Ref> e = element(*seq, k, it.at);
       if (!e) return false;

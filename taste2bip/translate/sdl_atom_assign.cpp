@@ -127,8 +127,8 @@ bool Translator::assign_choice(const Ref& target, const sdl::Expr& value,
 
 bool Translator::assign_statement(const sdl::Expr& target, const sdl::Expr& value,
                                   std::vector<std::string>& out) {
-  const bool variable_index = target.kind == sdl::Expr::Kind::Call &&
-                              target.operands.size() == 2 && !constant(target.operands[1]);
+  const bool variable_index = target.kind == sdl::Expr::Kind::Call && target.operands.size() == 2 &&
+                              !constant(target.operands[1]);
   if (!variable_index) {
     std::optional<Ref> t = reference(target);
     return t && assign(*t, value, out);

@@ -28,7 +28,11 @@ std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Typ
     if (!x) return std::nullopt;
     if (f == "num") return x;
     if (f == "float") return Scalar{"(" + x->text + " * 1.0)", "float"};
-    if (x->kind == "float") return Scalar{"max(" + x->text + ", -(" + x->text + "))", "float"};
+    if (x->kind == "float") {
+      need_function("float max(float, float)");
+      return Scalar{"max(" + x->text + ", -(" + x->text + "))", "float"};
+    }
+    need_function("int abs(int)");
     return Scalar{"abs(" + x->text + ")", "int"};
   }
   if (f == "power" && args == 2) {
@@ -36,8 +40,9 @@ std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Typ
     std::optional<std::int64_t> n = constant(e.operands[2]);
     if (!x) return std::nullopt;
     if (!n || *n < 0 || *n > 16) {
-      error(e.operands[2].at, "power with an exponent that is not a constant from 0 to 16 is "
-                              "not translated");
+      error(e.operands[2].at,
+            "power with an exponent that is not a constant from 0 to 16 is "
+            "not translated");
       return std::nullopt;
     }
     std::string text = x->kind == "float" ? "1.0" : "1";

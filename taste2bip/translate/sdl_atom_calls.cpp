@@ -19,10 +19,14 @@ const SignalInterface* find_interface(const std::vector<SignalInterface>& list,
 std::string format_text(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '%') out += "%%";
-    else if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else if (c == '\n') out += "\\n";
-    else out += c;
+    if (c == '%')
+      out += "%%";
+    else if (c == '"' || c == '\\')
+      out += std::string("\\") + c;
+    else if (c == '\n')
+      out += "\\n";
+    else
+      out += c;
   }
   return out;
 }
@@ -46,7 +50,8 @@ bool Translator::interface_call(const SignalInterface& r, const std::vector<sdl:
     return false;
   }
   for (std::size_t k = 0; k < args.size(); ++k) {
-    if (!r.parameters[k].out && !assign(interface_ref(r, r.parameters[k]), args[k], step.statements)) {
+    if (!r.parameters[k].out &&
+        !assign(interface_ref(r, r.parameters[k]), args[k], step.statements)) {
       return false;
     }
   }
@@ -109,7 +114,7 @@ bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
 }
 
 bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
-  std::string format, values;
+  std::string format, values, types = "string";
   for (const sdl::Expr& e : a.arguments) {
     if (e.kind == sdl::Expr::Kind::String) {
       format += format_text(e.text);
@@ -119,7 +124,9 @@ bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
     if (!v) return false;
     format += v->kind == "float" ? "%g" : (v->kind == "string" ? "%s" : "%d");
     values += ", " + v->text;
+    types += ", " + (v->kind.empty() ? std::string("int") : v->kind);
   }
+  need_function("printf(" + types + ")");
   step.statements.push_back("printf(\"" + format + (newline ? "\\n" : "") + "\"" + values + ");");
   return true;
 }
@@ -152,7 +159,8 @@ bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, S
     label_tables_.back()[folded(l.name)] = LabelSite{&l.transition.actions, 0, true};
     collect_labels(l.transition.actions, true, label_tables_.back());
   }
-  if (!p.body.starts.empty()) collect_labels(p.body.starts[0].transition.actions, true, label_tables_.back());
+  if (!p.body.starts.empty())
+    collect_labels(p.body.starts[0].transition.actions, true, label_tables_.back());
   inlining_.push_back(folded(p.name));
   const std::string key = chain.key;
   chain.key += "/" + std::to_string(++inline_count_);

@@ -101,8 +101,8 @@ std::optional<Ref> Translator::declare_sdl_variable(const sdl::Variable& v,
   Ref ref{bip_identifier(prefix + v.name), std::move(*leaves), type};
   for (const Leaf& leaf : ref.leaves) {
     if (used_.count(leaf_name(ref.data, leaf)) > 0) {
-      error(v.at, "variable '" + v.name + "' becomes the BIP data '" +
-                             leaf_name(ref.data, leaf) + "', a name already used in the atom");
+      error(v.at, "variable '" + v.name + "' becomes the BIP data '" + leaf_name(ref.data, leaf) +
+                      "', a name already used in the atom");
       return std::nullopt;
     }
   }
@@ -132,8 +132,8 @@ std::optional<Ref> Translator::element(const Ref& ref, std::int64_t index,
   std::vector<Leaf> leaves = leaves_under(ref, part, part, false);
   if (ref.type == nullptr || ref.type->kind != asn1::TypeKind::SequenceOf || leaves.empty()) {
     error(at, "element " + part + " of '" + ref.data +
-                         "' is not translated (not a SEQUENCE OF spread over data, or out of "
-                         "its bounds)");
+                  "' is not translated (not a SEQUENCE OF spread over data, or out of "
+                  "its bounds)");
     return std::nullopt;
   }
   const asn1::Type* type = ref.type->element ? definition(data_, *ref.type->element) : nullptr;

@@ -49,12 +49,23 @@ std::optional<std::string> Translator::answer_guard(const sdl::Expr& question,
     } else {
       const char* op = "==";
       switch (c.op) {
-        case sdl::Operator::NotEqual: op = "!="; break;
-        case sdl::Operator::Less: op = "<"; break;
-        case sdl::Operator::LessEqual: op = "<="; break;
-        case sdl::Operator::Greater: op = ">"; break;
-        case sdl::Operator::GreaterEqual: op = ">="; break;
-        default: break;
+        case sdl::Operator::NotEqual:
+          op = "!=";
+          break;
+        case sdl::Operator::Less:
+          op = "<";
+          break;
+        case sdl::Operator::LessEqual:
+          op = "<=";
+          break;
+        case sdl::Operator::Greater:
+          op = ">";
+          break;
+        case sdl::Operator::GreaterEqual:
+          op = ">=";
+          break;
+        default:
+          break;
       }
       text = "(" + q->text + " " + op + " " + low->text + ")";
     }

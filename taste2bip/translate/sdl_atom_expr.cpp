@@ -23,24 +23,38 @@ std::string string_literal(const std::string& text) {
 
 const char* bip_operator(sdl::Operator op) {
   switch (op) {
-    case sdl::Operator::Plus: return "+";
-    case sdl::Operator::Minus: return "-";
-    case sdl::Operator::Times: return "*";
-    case sdl::Operator::Divide: return "/";
+    case sdl::Operator::Plus:
+      return "+";
+    case sdl::Operator::Minus:
+      return "-";
+    case sdl::Operator::Times:
+      return "*";
+    case sdl::Operator::Divide:
+      return "/";
     case sdl::Operator::Mod:
-    case sdl::Operator::Rem: return "%";
-    case sdl::Operator::Less: return "<";
-    case sdl::Operator::LessEqual: return "<=";
-    case sdl::Operator::Greater: return ">";
-    case sdl::Operator::GreaterEqual: return ">=";
+    case sdl::Operator::Rem:
+      return "%";
+    case sdl::Operator::Less:
+      return "<";
+    case sdl::Operator::LessEqual:
+      return "<=";
+    case sdl::Operator::Greater:
+      return ">";
+    case sdl::Operator::GreaterEqual:
+      return ">=";
     case sdl::Operator::And:
-    case sdl::Operator::AndThen: return "&&";
+    case sdl::Operator::AndThen:
+      return "&&";
     case sdl::Operator::Or:
-    case sdl::Operator::OrElse: return "||";
+    case sdl::Operator::OrElse:
+      return "||";
     case sdl::Operator::Xor:
-    case sdl::Operator::NotEqual: return "!=";
-    case sdl::Operator::Equal: return "==";
-    default: return nullptr;
+    case sdl::Operator::NotEqual:
+      return "!=";
+    case sdl::Operator::Equal:
+      return "==";
+    default:
+      return nullptr;
   }
 }
 
@@ -248,7 +262,8 @@ std::optional<Scalar> Translator::binary(const sdl::Expr& e) {
   std::optional<Scalar> a = scalar(e.operands[0], type_of(e.operands[1]));
   std::optional<Scalar> b = scalar(e.operands[1], type_of(e.operands[0]));
   if (!a || !b) return std::nullopt;
-  if (op == sdl::Operator::Implies) return Scalar{"(!(" + a->text + ") || " + b->text + ")", "bool"};
+  if (op == sdl::Operator::Implies)
+    return Scalar{"(!(" + a->text + ") || " + b->text + ")", "bool"};
   std::string kind = "bool";
   if (is_arithmetic(op)) kind = (a->kind == "float" || b->kind == "float") ? "float" : "int";
   return Scalar{"(" + a->text + " " + bip + " " + b->text + ")", kind};
@@ -279,8 +294,8 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
       error(at, "the values compared do not have the same structure");
       return std::nullopt;
     }
-    text += (text.empty() ? "" : " && ") + leaf_name(x->data, l) + " == " +
-            leaf_name(y->data, *match);
+    text +=
+        (text.empty() ? "" : " && ") + leaf_name(x->data, l) + " == " + leaf_name(y->data, *match);
   }
   if (text.empty()) text = "true";
   return Scalar{equal ? "(" + text + ")" : "!(" + text + ")", "bool"};

@@ -42,11 +42,15 @@ void Translator::translate_state(const std::string& state) {
     }
   }
   for (const auto& [name, h] : handled) {
-    const bool known = timers_.count(name) > 0 ||
-                       std::any_of(function_.provided.begin(), function_.provided.end(),
-                                   [&](const SignalInterface& p) { return folded(p.name) == name; });
-    if (!known) error(h.signal->at, "input '" + h.signal->name + "' names no provided interface "
-                                    "or timer of " + function_.name);
+    const bool known =
+        timers_.count(name) > 0 ||
+        std::any_of(function_.provided.begin(), function_.provided.end(),
+                    [&](const SignalInterface& p) { return folded(p.name) == name; });
+    if (!known)
+      error(h.signal->at, "input '" + h.signal->name +
+                              "' names no provided interface "
+                              "or timer of " +
+                              function_.name);
   }
   for (const SignalInterface& p : function_.provided) {
     auto h = handled.find(folded(p.name));
@@ -79,8 +83,8 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
       return;
     }
     for (std::size_t k = 0; k < signal->parameters.size(); ++k) {
-      sdl::Expr name{sdl::Expr::Kind::Name, sdl::Operator::None, signal->parameters[k], {}, {},
-                     signal->at};
+      sdl::Expr name{
+          sdl::Expr::Kind::Name, sdl::Operator::None, signal->parameters[k], {}, {}, signal->at};
       std::optional<Ref> variable = reference(name);
       if (!variable) return;
       const Ref data = interface_ref(p, p.parameters[k]);
@@ -99,7 +103,8 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
     std::optional<Scalar> guard = scalar(*input->enabling);
     if (!guard) return;
     step.guard = guard->text;
-    notes_.push_back("'" + p.name + "' waits in state " + state + " while its enabling "
+    notes_.push_back("'" + p.name + "' waits in state " + state +
+                     " while its enabling "
                      "condition is false");
   }
   chain_end(actions(input->transition.actions, 0, std::move(step), chain), input->at);
@@ -108,7 +113,9 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
 void Translator::timer_transition(const std::string& state, const std::string& timer,
                                   const sdl::Input* input) {
   Chain chain{state, state + "/" + timer, nullptr, {}};
-  Step step{false, timer + "_expired", state,
+  Step step{false,
+            timer + "_expired",
+            state,
             timer + "_armed && " + timer + "_clock >= " + timer + "_value",
             {timer + "_armed = false;"}};
   if (input == nullptr) {

@@ -17,9 +17,8 @@ bool block_path(const std::vector<sdl::Block>& blocks, const std::string& proces
                 std::vector<const sdl::Block*>& path) {
   for (const sdl::Block& b : blocks) {
     path.push_back(&b);
-    const bool here = std::any_of(b.processes.begin(), b.processes.end(), [&](const auto& p) {
-      return folded(p.name) == folded(process);
-    });
+    const bool here = std::any_of(b.processes.begin(), b.processes.end(),
+                                  [&](const auto& p) { return folded(p.name) == folded(process); });
     if (here || block_path(b.blocks, process, path)) return true;
     path.pop_back();
   }
@@ -45,8 +44,7 @@ void add_paths(const std::vector<sdl::Channel>& channels, const std::vector<std:
   }
 }
 
-std::optional<SignalInterface> signal_interface(const sdl::System& system,
-                                                const std::string& name,
+std::optional<SignalInterface> signal_interface(const sdl::System& system, const std::string& name,
                                                 const asn1::DataView& data,
                                                 bipc::Diagnostics& diags) {
   const sdl::SignalDeclaration* declaration = nullptr;

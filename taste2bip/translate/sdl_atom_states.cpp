@@ -50,7 +50,8 @@ void Translator::collect_labels(const std::vector<sdl::Action>& list, bool top_l
                                 std::map<std::string, LabelSite>& into) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const sdl::Action& a = list[i];
-    if (a.kind == sdl::Action::Kind::Label) into[folded(a.name)] = LabelSite{&list, i + 1, top_level};
+    if (a.kind == sdl::Action::Kind::Label)
+      into[folded(a.name)] = LabelSite{&list, i + 1, top_level};
     if (a.kind == sdl::Action::Kind::Decision) {
       for (const sdl::Answer& answer : a.decision.answers) {
         collect_labels(answer.transition.actions, false, into);

@@ -128,8 +128,7 @@ class Translator {
   std::string branch_port(std::size_t k);
 
   // Actions (sdl_atom_actions.cpp, sdl_atom_decision.cpp, sdl_atom_calls.cpp).
-  Outcome actions(const std::vector<sdl::Action>& list, std::size_t from, Step step,
-                  Chain& chain);
+  Outcome actions(const std::vector<sdl::Action>& list, std::size_t from, Step step, Chain& chain);
   bool action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended);
   bool task(const sdl::TaskElement& t, Step& step, Chain& chain, Outcome& out, bool& ended);
   bool for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out, bool& ended);
@@ -158,8 +157,8 @@ class Translator {
   void translate_start();
   void translate_state(const std::string& state);
   bool state_applies(const sdl::State& s, const std::string& state) const;
-  void input_transition(const std::string& state, const SignalInterface& p,
-                        const sdl::Input* input, const sdl::InputSignal* signal);
+  void input_transition(const std::string& state, const SignalInterface& p, const sdl::Input* input,
+                        const sdl::InputSignal* signal);
   void timer_transition(const std::string& state, const std::string& timer,
                         const sdl::Input* input);
   void continuous_transitions(const std::string& state, const std::string& place);
@@ -176,9 +175,9 @@ class Translator {
   std::map<const sdl::Procedure*, std::map<std::string, Binding>> procedure_scopes_;
   std::map<const sdl::Procedure*, std::vector<Ref>> procedure_parameters_;
   std::vector<std::string> initial_statements_;
-  std::vector<std::map<std::string, Binding>> scopes_;       // innermost last
+  std::vector<std::map<std::string, Binding>> scopes_;  // innermost last
   std::vector<std::map<std::string, LabelSite>> label_tables_;
-  std::vector<std::string> inlining_;  // procedures being inlined, for recursion
+  std::vector<std::string> inlining_;          // procedures being inlined, for recursion
   std::map<std::string, std::string> states_;  // folded SDL name -> place
   std::vector<std::string> state_order_;       // folded names, in order of appearance
   std::map<std::string, std::string> timers_;  // folded name -> BIP base name
@@ -192,7 +191,8 @@ class Translator {
   std::vector<std::string> places_;
   std::vector<std::string> branch_ports_;
   std::size_t place_count_ = 0;
-  std::vector<std::string> notes_, extern_types_;
+  std::vector<std::string> notes_, extern_types_, extern_functions_;
+  void need_function(const std::string& prototype);
   std::size_t errors_before_ = 0;
   bool quiet_ = false;
 };
