@@ -1,0 +1,60 @@
+// The SDL processes of real designs translated: ESROCOS's watchdog (each function's process
+// with its system_structure.pr and the design's data view) and OpenGEODE's test suite, each
+// process either translated and accepted by bipc, or refused with located errors.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "tests/taste2bip/sdl_atom_real_support.h"
+
+namespace smcbip::taste2bip::test {
+namespace {
+
+const fs::path kData = shared_data_dir();
+
+TEST(SdlAtomRealFiles, WatchdogProcessesTranslateAndCheck) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
+  const fs::path model = kData / "esrocos-mc_watchdog" / "TasteModel";
+  std::vector<fs::path> asn = files_with(model / "types", ".asn");
+  asn.push_back(model / "DataView.asn");
+  std::size_t translated = 0;
+  for (const char* function : {"joystickdriver", "cmddispatcher", "logger", "blsclient"}) {
+    const std::vector<ProcessResult> results = translate_folder(model / function, asn);
+    ASSERT_EQ(results.size(), 1u) << function;
+    EXPECT_TRUE(results[0].ok) << function << ": " << results[0].message;
+    EXPECT_EQ(results[0].process, function);
+    translated += results[0].ok ? 1 : 0;
+  }
+  EXPECT_EQ(translated, 4u);
+}
+
+TEST(SdlAtomRealFiles, OpenGeodeTestSuiteTranslatesOrIsRefusedWithLocations) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
+  const fs::path suite = kData / "taste" / "esa-opengeode-testsuite";
+  std::vector<fs::path> folders;
+  for (const auto& entry : fs::directory_iterator(suite)) {
+    if (entry.is_directory()) folders.push_back(entry.path());
+  }
+  std::sort(folders.begin(), folders.end());
+  std::size_t translated = 0, refused = 0;
+  for (const fs::path& folder : folders) {
+    const std::vector<ProcessResult> results = translate_folder(folder, files_with(folder, ".asn"));
+    for (const ProcessResult& r : results) {
+      std::cout << folder.filename().string() << "/" << r.file << " " << r.process << ": "
+                << (r.ok ? "translated" : r.message) << "\n";
+      if (r.ok) {
+        ++translated;
+        continue;
+      }
+      ++refused;
+      // A refusal names its place in a file: `file:line:column: error: ...`.
+      EXPECT_NE(r.message.find(": error: "), std::string::npos) << r.message;
+      EXPECT_EQ(r.message.rfind("bipc: ", 0), std::string::npos) << r.message;
+    }
+  }
+  std::cout << translated << " processes translated, " << refused << " refused\n";
+  EXPECT_GE(translated, 15u);  // what the translation achieved when this test was written
+}
+
+}  // namespace
+}  // namespace smcbip::taste2bip::test
