@@ -30,8 +30,10 @@ Translator::Translator(const FunctionSignature& function, const sdl::Process& pr
                        const std::vector<const sdl::Procedure*>& procedures,
                        const asn1::DataView& data, bipc::Diagnostics& diags)
     : function_(function), process_(process), data_(data), diags_(diags) {
-  for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)] = p;
-  for (const sdl::Procedure& p : process.body.procedures) procedures_[folded(p.name)] = &p;
+  for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)].push_back(p);
+  for (const sdl::Procedure& p : process.body.procedures) {
+    procedures_[folded(p.name)].push_back(&p);
+  }
   errors_before_ = diags.error_count();
 }
 
@@ -72,6 +74,10 @@ void Translator::declare_timers() {
 void Translator::declare_variables() {
   scopes_.emplace_back();
   for (const sdl::Variable& v : process_.body.variables) {
+    if (scopes_.back().count(folded(v.name)) > 0) {
+      error(v.at, "variable '" + v.name + "' is declared twice (SDL names ignore case)");
+      continue;
+    }
     std::optional<Ref> ref = declare_sdl_variable(v, "");
     if (!ref) continue;
     scopes_.back()[folded(v.name)] = Binding{*ref, 0};
@@ -84,9 +90,6 @@ void Translator::declare_procedure(const sdl::Procedure& p) {
   const std::string prefix = bip_identifier(p.name) + "_";
   auto& scope = procedure_scopes_[&p];
   for (const sdl::FormalParameter& f : p.parameters) {
-    if (f.direction == sdl::FormalParameter::Direction::Out) {
-      error(f.at, "out parameter '" + f.name + "' is not translated (in and in/out are)");
-    }
     std::optional<Ref> ref = declare_sdl_variable(sdl::Variable{f.name, f.type, {}, f.at}, prefix);
     if (!ref) continue;
     scope[folded(f.name)] = Binding{*ref, 0};
@@ -96,10 +99,12 @@ void Translator::declare_procedure(const sdl::Procedure& p) {
     std::optional<Ref> ref = declare_sdl_variable(v, prefix);
     if (ref) scope[folded(v.name)] = Binding{*ref, 0};
   }
-  if (!p.return_type.empty() && !p.return_name.empty()) {
-    sdl::Variable result{p.return_name, p.return_type, {}, p.at};
-    std::optional<Ref> ref = declare_sdl_variable(result, prefix);
-    if (ref) scope[folded(p.return_name)] = Binding{*ref, 0};
+  if (!p.return_type.empty()) {
+    const std::string name = p.return_name.empty() ? "result" : p.return_name;
+    std::optional<Ref> ref =
+        declare_sdl_variable(sdl::Variable{name, p.return_type, {}, p.at}, prefix);
+    if (ref && !p.return_name.empty()) scope[folded(p.return_name)] = Binding{*ref, 0};
+    if (ref) procedure_results_[&p] = *ref;
   }
   if (!p.body.procedures.empty() || !p.body.composite_states.empty() || !p.body.states.empty() ||
       !p.body.timers.empty()) {
@@ -122,7 +127,9 @@ std::optional<AtomType> Translator::run() {
   }
   declare_timers();
   declare_variables();
-  for (const auto& [name, p] : procedures_) declare_procedure(*p);
+  for (const auto& [name, list] : procedures_) {
+    for (const sdl::Procedure* p : list) declare_procedure(*p);
+  }
   collect_states();
   label_tables_.emplace_back();
   for (const sdl::FloatingLabel& l : process_.body.labels) {

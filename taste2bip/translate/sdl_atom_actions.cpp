@@ -94,8 +94,12 @@ bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome&
         return false;
       }
       if (a.value) {
-        error(a.value->at, "a procedure returning a value is not translated");
-        return false;
+        auto result = procedure_results_.find(inlining_.back());
+        if (result == procedure_results_.end()) {
+          error(a.value->at, "a value returned by a procedure that declares no result type");
+          return false;
+        }
+        if (!assign(result->second, *a.value, step.statements)) return false;
       }
       out.returns.push_back(std::move(step));
       return true;
@@ -109,6 +113,9 @@ bool Translator::task(const sdl::TaskElement& t, Step& step, Chain& chain, Outco
                       bool& ended) {
   switch (t.kind) {
     case sdl::TaskElement::Kind::Assignment:
+      if (t.value.kind == sdl::Expr::Kind::ProcedureCall) {
+        return call_for_value(t.target, t.value, step, chain, out, ended);
+      }
       return assign_statement(t.target, t.value, step.statements);
     case sdl::TaskElement::Kind::Informal:
       notes_.push_back("informal task '" + t.text + "' is not executed");

@@ -37,6 +37,11 @@ bool Translator::assign(const Ref& target, const sdl::Expr& value, std::vector<s
   if (is_scalar(target)) {
     std::optional<Scalar> s = scalar(value, target.leaves[0].asn1_type);
     if (!s) return false;
+    if (!s->kind.empty() && !assignable(target.leaves[0].type, s->kind)) {
+      error(value.at, "a value of BIP type " + s->kind + " assigned to '" + target.data +
+                          "' of BIP type " + target.leaves[0].type);
+      return false;
+    }
     out.push_back(target.data + " = " + s->text + ";");
     return true;
   }

@@ -80,14 +80,46 @@ bool Translator::call(const sdl::Action& a, Step& step, Chain& chain, Outcome& o
   if (const SignalInterface* r = find_interface(function_.required, a.name)) {
     return interface_call(*r, a.arguments, a.at, step, chain);
   }
-  auto p = procedures_.find(f);
-  if (p != procedures_.end() && !p->second->is_external && !p->second->is_referenced) {
-    return procedure_call(*p->second, a, step, chain, out, ended);
+  if (const sdl::Procedure* p = choose_procedure(a.name, a.arguments.size())) {
+    return procedure_call(*p, a, step, chain, out, ended);
   }
   error(a.at, "call of '" + a.name +
                   "' is not translated (no procedure with a body nor required interface of that "
                   "name)");
   return false;
+}
+
+const sdl::Procedure* Translator::choose_procedure(const std::string& name, std::size_t arguments) {
+  const sdl::Procedure* chosen = nullptr;
+  if (auto p = procedures_.find(folded(name)); p != procedures_.end()) {
+    for (const sdl::Procedure* candidate : p->second) {
+      if (!candidate->is_external && !candidate->is_referenced &&
+          candidate->parameters.size() == arguments) {
+        chosen = candidate;
+      }
+    }
+  }
+  return chosen;
+}
+
+bool Translator::call_for_value(const sdl::Expr& target, const sdl::Expr& call, Step& step,
+                                Chain& chain, Outcome& out, bool& ended) {
+  const sdl::Expr& callee = call.operands[0];
+  const sdl::Procedure* p = callee.kind == sdl::Expr::Kind::Name
+                                ? choose_procedure(callee.text, call.operands.size() - 1)
+                                : nullptr;
+  if (p == nullptr || procedure_results_.count(p) == 0) {
+    error(call.at, "this call names no procedure with a body that returns a value");
+    return false;
+  }
+  sdl::Action a;
+  a.kind = sdl::Action::Kind::Call;
+  a.name = callee.text;
+  a.arguments.assign(call.operands.begin() + 1, call.operands.end());
+  a.at = call.at;
+  if (!procedure_call(*p, a, step, chain, out, ended) || ended) return false;
+  std::optional<Ref> t = reference(target);
+  return t && assign_ref(*t, procedure_results_.at(p), call.at, step.statements);
 }
 
 bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
@@ -133,8 +165,8 @@ bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
 
 bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, Step& step,
                                 Chain& chain, Outcome& out, bool& ended) {
-  for (const std::string& name : inlining_) {
-    if (name == folded(p.name)) {
+  for (const sdl::Procedure* q : inlining_) {
+    if (q == &p) {
       error(a.at, "recursive call of procedure '" + p.name + "' is not translated");
       return false;
     }
@@ -146,7 +178,8 @@ bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, S
     return false;
   }
   for (std::size_t k = 0; k < params.size(); ++k) {
-    if (!assign(params[k], a.arguments[k], step.statements)) return false;
+    const bool out_only = p.parameters[k].direction == sdl::FormalParameter::Direction::Out;
+    if (!out_only && !assign(params[k], a.arguments[k], step.statements)) return false;
   }
   scopes_.push_back(procedure_scopes_[&p]);
   for (const sdl::Variable& v : p.body.variables) {
@@ -161,7 +194,7 @@ bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, S
   }
   if (!p.body.starts.empty())
     collect_labels(p.body.starts[0].transition.actions, true, label_tables_.back());
-  inlining_.push_back(folded(p.name));
+  inlining_.push_back(&p);
   const std::string key = chain.key;
   chain.key += "/" + std::to_string(++inline_count_);
   Outcome o;

@@ -141,6 +141,15 @@ std::optional<std::int64_t> Translator::constant(const sdl::Expr& e) {
     }
     return std::nullopt;
   }
+  if (e.kind == K::Call && e.operands.size() == 2 && e.operands[0].kind == K::Name &&
+      folded(e.operands[0].text) == "length") {
+    const bool was = quiet_;
+    quiet_ = true;
+    std::optional<Scalar> n = call_value(e, nullptr);
+    quiet_ = was;
+    if (!n) return std::nullopt;
+    return constant(sdl::Expr{K::Integer, sdl::Operator::None, n->text, {}, {}, e.at});
+  }
   if (e.kind == K::Unary && e.op == sdl::Operator::Negate) {
     std::optional<std::int64_t> v = constant(e.operands[0]);
     return v ? std::optional<std::int64_t>(-*v) : std::nullopt;

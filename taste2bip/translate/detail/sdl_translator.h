@@ -148,6 +148,9 @@ class Translator {
                       const bipc::Location& at, Step& step, Chain& chain);
   bool procedure_call(const sdl::Procedure& p, const sdl::Action& a, Step& step, Chain& chain,
                       Outcome& out, bool& ended);
+  const sdl::Procedure* choose_procedure(const std::string& name, std::size_t arguments);
+  bool call_for_value(const sdl::Expr& target, const sdl::Expr& call, Step& step, Chain& chain,
+                      Outcome& out, bool& ended);
   std::optional<std::string> state_place(const std::string& name, const bipc::Location& at);
 
   // States (sdl_atom_states.cpp).
@@ -171,13 +174,16 @@ class Translator {
   const sdl::Process& process_;
   const asn1::DataView& data_;
   bipc::Diagnostics& diags_;
-  std::map<std::string, const sdl::Procedure*> procedures_;  // folded name
+  /// By folded name; a process may declare a name twice (text and graphics), the call picks
+  /// the one whose parameters it matches.
+  std::map<std::string, std::vector<const sdl::Procedure*>> procedures_;
   std::map<const sdl::Procedure*, std::map<std::string, Binding>> procedure_scopes_;
   std::map<const sdl::Procedure*, std::vector<Ref>> procedure_parameters_;
   std::vector<std::string> initial_statements_;
   std::vector<std::map<std::string, Binding>> scopes_;  // innermost last
   std::vector<std::map<std::string, LabelSite>> label_tables_;
-  std::vector<std::string> inlining_;          // procedures being inlined, for recursion
+  std::vector<const sdl::Procedure*> inlining_;  // procedures being inlined, for recursion
+  std::map<const sdl::Procedure*, Ref> procedure_results_;
   std::map<std::string, std::string> states_;  // folded SDL name -> place
   std::vector<std::string> state_order_;       // folded names, in order of appearance
   std::map<std::string, std::string> timers_;  // folded name -> BIP base name
