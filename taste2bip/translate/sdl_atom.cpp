@@ -85,9 +85,9 @@ void Translator::declare_variables() {
   }
 }
 
-void Translator::declare_procedure(const sdl::Procedure& p) {
+void Translator::declare_procedure(const sdl::Procedure& p, const std::string& level_prefix) {
   if (p.is_external || p.is_referenced) return;
-  const std::string prefix = bip_identifier(p.name) + "_";
+  const std::string prefix = level_prefix + bip_identifier(p.name) + "_";
   auto& scope = procedure_scopes_[&p];
   for (const sdl::FormalParameter& f : p.parameters) {
     std::optional<Ref> ref = declare_sdl_variable(sdl::Variable{f.name, f.type, {}, f.at}, prefix);
@@ -122,33 +122,17 @@ std::optional<AtomType> Translator::run() {
       for (const char* port : {"_in", "_return", "_out", "_result"}) reserve(i.name + port);
     }
   }
-  for (const sdl::CompositeState& c : process_.body.composite_states) {
-    error(c.at, "nested state '" + c.name + "' is not translated");
-  }
   declare_timers();
   declare_variables();
   for (const auto& [name, list] : procedures_) {
     for (const sdl::Procedure* p : list) declare_procedure(*p);
   }
-  collect_states();
+  build_level(process_.body, "", nullptr, nullptr);
   label_tables_.emplace_back();
-  for (const sdl::FloatingLabel& l : process_.body.labels) {
-    label_tables_.back()[folded(l.name)] = LabelSite{&l.transition.actions, 0, true};
-    collect_labels(l.transition.actions, true, label_tables_.back());
-  }
-  for (const sdl::Start& s : process_.body.starts) {
-    collect_labels(s.transition.actions, true, label_tables_.back());
-  }
-  for (const sdl::State& s : process_.body.states) {
-    for (const sdl::Input& i : s.inputs) {
-      collect_labels(i.transition.actions, true, label_tables_.back());
-    }
-    for (const sdl::ContinuousSignal& c : s.continuous) {
-      collect_labels(c.transition.actions, true, label_tables_.back());
-    }
-  }
+  for (const auto& level : levels_) collect_body_labels(*level->body, label_tables_.back());
   translate_start();
-  for (const std::string& state : std::vector<std::string>(state_order_)) translate_state(state);
+  for (const StableState& state : std::vector<StableState>(stable_)) translate_state(state);
+  translate_entries();
   if (diags_.error_count() > errors_before_) return std::nullopt;
   AtomType atom;
   atom.name = function_.name;

@@ -65,16 +65,12 @@ bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome&
       return true;
     case K::NextState: {
       ended = true;
-      if (!a.via.empty()) {
-        error(a.at, "nextstate via an entry point (a nested state) is not translated");
-        return false;
-      }
       if (a.name == "-" && chain.origin.empty()) {
         error(a.at, "'nextstate -' in the start transition has no state to go back to");
         return false;
       }
-      std::optional<std::string> target =
-          a.name == "-" ? std::optional<std::string>(chain.origin) : state_place(a.name, a.at);
+      std::optional<std::string> target = a.name == "-" ? std::optional<std::string>(chain.origin)
+                                                        : state_place(a.name, a.via, a.at);
       if (target) terminate(std::move(step), *target, chain);
       return target.has_value();
     }
@@ -89,8 +85,11 @@ bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome&
       return true;
     case K::Return:
       ended = true;
+      if (inlining_.empty() && level_ != nullptr && level_->composite != nullptr) {
+        return exit_composite(a, step, chain, out);
+      }
       if (inlining_.empty()) {
-        error(a.at, "return outside a procedure (from a nested state) is not translated");
+        error(a.at, "return outside a procedure or a nested state");
         return false;
       }
       if (a.value) {
@@ -205,11 +204,14 @@ void Translator::terminate(Step step, const std::string& target, Chain& chain) {
   close(std::move(step), target);
 }
 
-std::optional<std::string> Translator::state_place(const std::string& name,
+std::optional<std::string> Translator::state_place(const std::string& name, const std::string& via,
                                                    const bipc::Location& at) {
-  auto it = states_.find(folded(name));
-  if (it != states_.end()) return it->second;
-  error(at, "'" + name + "' is not a state of the process");
+  if (auto it = level_->composites.find(folded(name)); it != level_->composites.end()) {
+    return entry_place(*it->second, via);
+  }
+  auto it = level_->states.find(folded(name));
+  if (it != level_->states.end() && via.empty()) return it->second;
+  error(at, "'" + name + "' is not a " + (via.empty() ? "state" : "nested state") + " here");
   return std::nullopt;
 }
 

@@ -8,32 +8,20 @@
 
 namespace smcbip::taste2bip::detail {
 
-namespace {
-
-struct Handler {
-  const sdl::Input* input = nullptr;
-  const sdl::InputSignal* signal = nullptr;
-};
-
-}  // namespace
-
-void Translator::translate_state(const std::string& state) {
-  const std::string& at = states_.at(state);
-  std::vector<const sdl::State*> blocks;
-  for (bool any : {false, true}) {
-    for (const sdl::State& s : process_.body.states) {
-      if (s.is_any == any && state_applies(s, state)) blocks.push_back(&s);
-    }
-  }
+void Translator::translate_state(const StableState& state) {
+  const std::string& at = state.place;
+  const auto blocks = blocks_of(state);
   std::map<std::string, Handler> handled;  // folded signal name
-  const sdl::Input* any_input = nullptr;
+  Handler any_input;
   bool save_all = false;
   std::vector<std::string> saved;
-  for (const sdl::State* s : blocks) {
+  for (const auto& [s, level] : blocks) {
     for (const sdl::Input& input : s->inputs) {
-      if (input.is_any && any_input == nullptr) any_input = &input;
+      if (input.is_any && any_input.input == nullptr) any_input = Handler{&input, nullptr, level};
       for (const sdl::InputSignal& sig : input.signals) {
-        if (handled.count(folded(sig.name)) == 0) handled[folded(sig.name)] = {&input, &sig};
+        if (handled.count(folded(sig.name)) == 0) {
+          handled[folded(sig.name)] = Handler{&input, &sig, level};
+        }
       }
     }
     for (const std::string& n : s->saves) {
@@ -46,33 +34,35 @@ void Translator::translate_state(const std::string& state) {
         timers_.count(name) > 0 ||
         std::any_of(function_.provided.begin(), function_.provided.end(),
                     [&](const SignalInterface& p) { return folded(p.name) == name; });
-    if (!known)
+    if (!known) {
       error(h.signal->at, "input '" + h.signal->name +
-                              "' names no provided interface "
-                              "or timer of " +
-                              function_.name);
+                              "' names no provided interface or timer of " + function_.name);
+    }
   }
   for (const SignalInterface& p : function_.provided) {
     auto h = handled.find(folded(p.name));
     if (h != handled.end()) {
-      input_transition(at, p, h->second.input, h->second.signal);
-    } else if (any_input != nullptr) {
-      input_transition(at, p, any_input, nullptr);
+      input_transition(at, p, h->second);
+    } else if (any_input.input != nullptr) {
+      input_transition(at, p, any_input);
     } else if (save_all || std::count(saved.begin(), saved.end(), folded(p.name)) > 0) {
       notes_.push_back("'" + p.name + "' is saved in state " + at + ": the call waits there");
     } else {
-      input_transition(at, p, nullptr, nullptr);
+      input_transition(at, p, Handler{nullptr, nullptr, state.level});
     }
   }
   for (const auto& [name, base] : timers_) {
     auto h = handled.find(name);
-    timer_transition(at, base, h != handled.end() ? h->second.input : any_input);
+    timer_transition(at, base, h != handled.end() ? h->second : any_input);
   }
-  continuous_transitions(state, at);
+  continuous_transitions(state, blocks);
 }
 
 void Translator::input_transition(const std::string& state, const SignalInterface& p,
-                                  const sdl::Input* input, const sdl::InputSignal* signal) {
+                                  const Handler& h) {
+  const sdl::Input* input = h.input;
+  const sdl::InputSignal* signal = h.signal;
+  level_ = h.level;
   Chain chain{state, state + "/" + p.name, &p, {}};
   Step step{false, p.name + "_in", state, "", {}};
   if (signal != nullptr) {
@@ -111,7 +101,9 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
 }
 
 void Translator::timer_transition(const std::string& state, const std::string& timer,
-                                  const sdl::Input* input) {
+                                  const Handler& h) {
+  const sdl::Input* input = h.input;
+  level_ = h.level;
   Chain chain{state, state + "/" + timer, nullptr, {}};
   Step step{false,
             timer + "_expired",
@@ -125,25 +117,33 @@ void Translator::timer_transition(const std::string& state, const std::string& t
   chain_end(actions(input->transition.actions, 0, std::move(step), chain), input->at);
 }
 
-void Translator::continuous_transitions(const std::string& state, const std::string& place) {
-  std::vector<std::pair<std::int64_t, const sdl::ContinuousSignal*>> signals;
-  for (const sdl::State& s : process_.body.states) {
-    if (!state_applies(s, state)) continue;
-    for (const sdl::ContinuousSignal& c : s.continuous) {
+void Translator::continuous_transitions(
+    const StableState& state,
+    const std::vector<std::pair<const sdl::State*, const Level*>>& blocks) {
+  const std::string& place = state.place;
+  struct Signal {
+    std::int64_t priority;
+    const sdl::ContinuousSignal* signal;
+    const Level* level;
+  };
+  std::vector<Signal> signals;
+  for (const auto& [s, level] : blocks) {
+    for (const sdl::ContinuousSignal& c : s->continuous) {
       std::int64_t priority = std::numeric_limits<std::int64_t>::max();
       if (c.priority) {
         std::optional<std::int64_t> n = constant(*c.priority);
         if (!n) error(c.priority->at, "a priority that is not a constant is not translated");
         priority = n.value_or(priority);
       }
-      signals.emplace_back(priority, &c);
+      signals.push_back(Signal{priority, &c, level});
     }
   }
   std::stable_sort(signals.begin(), signals.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+                   [](const Signal& a, const Signal& b) { return a.priority < b.priority; });
   std::string higher;
   for (std::size_t k = 0; k < signals.size(); ++k) {
-    const sdl::ContinuousSignal& c = *signals[k].second;
+    const sdl::ContinuousSignal& c = *signals[k].signal;
+    level_ = signals[k].level;
     std::optional<Scalar> condition = scalar(c.condition);
     if (!condition) continue;
     const std::string guard =

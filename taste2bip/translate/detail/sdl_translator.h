@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -73,6 +74,40 @@ struct LabelSite {
   bool top_level = true;
 };
 
+/// A body whose states are flattened into places: the process's, or a composite state's
+/// substructure (its places prefixed with `<Composite>_`).
+struct Level {
+  const sdl::Body* body = nullptr;
+  std::string prefix;
+  const Level* parent = nullptr;
+  const sdl::CompositeState* composite = nullptr;  // null for the process
+  std::map<std::string, std::string> states;       // folded name -> place
+  std::map<std::string, const sdl::CompositeState*> composites;
+  const sdl::Procedure* entry = nullptr;  // the substructure's `entry` and `exit` procedures
+  const sdl::Procedure* exit = nullptr;
+};
+
+/// A state the process rests in: a place and the level that declares it.
+struct StableState {
+  std::string place;
+  std::string name;  // folded
+  const Level* level = nullptr;
+};
+
+/// A transition of a state block, with the level whose names it sees.
+struct Handler {
+  const sdl::Input* input = nullptr;
+  const sdl::InputSignal* signal = nullptr;
+  const Level* level = nullptr;
+};
+
+/// The entry of a composite state through an entry point (empty: its default start).
+struct PendingEntry {
+  const sdl::CompositeState* composite = nullptr;
+  std::string entry;
+  std::string place;
+};
+
 class Translator {
  public:
   Translator(const FunctionSignature& function, const sdl::Process& process,
@@ -88,7 +123,7 @@ class Translator {
   // Declarations (sdl_atom.cpp).
   void declare_timers();
   void declare_variables();
-  void declare_procedure(const sdl::Procedure& p);
+  void declare_procedure(const sdl::Procedure& p, const std::string& level_prefix = {});
   std::string text() const;
 
   // Variables and values (sdl_atom_data.cpp).
@@ -151,23 +186,33 @@ class Translator {
   const sdl::Procedure* choose_procedure(const std::string& name, std::size_t arguments);
   bool call_for_value(const sdl::Expr& target, const sdl::Expr& call, Step& step, Chain& chain,
                       Outcome& out, bool& ended);
-  std::optional<std::string> state_place(const std::string& name, const bipc::Location& at);
+  std::optional<std::string> state_place(const std::string& name, const std::string& via,
+                                         const bipc::Location& at);
 
   // States (sdl_atom_states.cpp).
   void collect_states();
+  Level* build_level(const sdl::Body& body, const std::string& prefix, const Level* parent,
+                     const sdl::CompositeState* composite);
+  void declare_level(Level& level);
+  std::string entry_place(const sdl::CompositeState& c, const std::string& entry);
+  void translate_entries();
+  bool exit_composite(const sdl::Action& a, Step& step, Chain& chain, Outcome& out);
+  bool inline_hook(const sdl::Procedure* p, Step& step, Chain& chain, const bipc::Location& at);
+  std::vector<std::pair<const sdl::State*, const Level*>> blocks_of(const StableState& s) const;
+  void collect_body_labels(const sdl::Body& body, std::map<std::string, LabelSite>& into);
   void collect_labels(const std::vector<sdl::Action>& list, bool top_level,
                       std::map<std::string, LabelSite>& into);
   void translate_start();
-  void translate_state(const std::string& state);
+  void translate_state(const StableState& state);
   bool state_applies(const sdl::State& s, const std::string& state) const;
-  void input_transition(const std::string& state, const SignalInterface& p, const sdl::Input* input,
-                        const sdl::InputSignal* signal);
-  void timer_transition(const std::string& state, const std::string& timer,
-                        const sdl::Input* input);
-  void continuous_transitions(const std::string& state, const std::string& place);
+  void input_transition(const std::string& state, const SignalInterface& p, const Handler& h);
+  void timer_transition(const std::string& state, const std::string& timer, const Handler& h);
+  void continuous_transitions(
+      const StableState& state,
+      const std::vector<std::pair<const sdl::State*, const Level*>>& blocks);
   void chain_end(const Outcome& outcome, const bipc::Location& at);
-  void add_state(const std::string& name);
-  void scan_nextstates(const std::vector<sdl::Action>& list);
+  void add_state(Level& level, const std::string& name);
+  void scan_nextstates(Level& level, const std::vector<sdl::Action>& list);
 
   // What the translation sees.
   const FunctionSignature& function_;
@@ -184,8 +229,12 @@ class Translator {
   std::vector<std::map<std::string, LabelSite>> label_tables_;
   std::vector<const sdl::Procedure*> inlining_;  // procedures being inlined, for recursion
   std::map<const sdl::Procedure*, Ref> procedure_results_;
-  std::map<std::string, std::string> states_;  // folded SDL name -> place
-  std::vector<std::string> state_order_;       // folded names, in order of appearance
+  std::vector<std::unique_ptr<Level>> levels_;
+  std::map<const sdl::CompositeState*, Level*> composite_levels_;
+  std::vector<StableState> stable_;  // in order of appearance
+  const Level* level_ = nullptr;     // the level whose transition is being translated
+  std::map<std::string, std::string> entry_places_;
+  std::vector<PendingEntry> pending_entries_;
   std::map<std::string, std::string> timers_;  // folded name -> BIP base name
   std::map<std::string, std::string> label_places_;
   std::size_t inline_count_ = 0;

@@ -1,0 +1,85 @@
+// Composite states flattened: entering one (`nextstate C [via E]`) goes to a place from which
+// its substructure's start for that entry runs (after its `entry` procedure); `return [X]`
+// inside it runs its `exit` procedure and then the `connect` transition of exit X.
+#include "taste2bip/names.h"
+#include "taste2bip/translate/detail/sdl_translator.h"
+
+namespace smcbip::taste2bip::detail {
+
+std::string Translator::entry_place(const sdl::CompositeState& c, const std::string& entry) {
+  const std::string key =
+      std::to_string(reinterpret_cast<std::uintptr_t>(&c)) + "/" + folded(entry);
+  if (auto it = entry_places_.find(key); it != entry_places_.end()) return it->second;
+  const Level* inner = composite_levels_.at(&c);
+  std::string base = inner->prefix.substr(0, inner->prefix.size() - 1);
+  if (!entry.empty()) base += "_via_" + bip_identifier(entry);
+  const std::string place = fresh(base);
+  places_.push_back(place);
+  entry_places_[key] = place;
+  pending_entries_.push_back(PendingEntry{&c, entry, place});
+  return place;
+}
+
+bool Translator::inline_hook(const sdl::Procedure* p, Step& step, Chain& chain,
+                             const bipc::Location& at) {
+  if (p == nullptr) return true;
+  sdl::Action call;
+  call.kind = sdl::Action::Kind::Call;
+  call.name = p->name;
+  call.at = at;
+  Outcome unused;
+  bool ended = false;
+  return procedure_call(*p, call, step, chain, unused, ended) && !ended;
+}
+
+void Translator::translate_entries() {
+  while (!pending_entries_.empty()) {
+    const PendingEntry e = pending_entries_.back();
+    pending_entries_.pop_back();
+    const Level* inner = composite_levels_.at(e.composite);
+    const sdl::Start* start = nullptr;
+    for (const sdl::Start& s : e.composite->body.starts) {
+      if (folded(s.entry_point) == folded(e.entry)) start = &s;
+    }
+    if (start == nullptr) {
+      error(e.composite->at, "nested state '" + e.composite->name + "' has no start" +
+                                 (e.entry.empty() ? "" : " for entry point '" + e.entry + "'"));
+      continue;
+    }
+    level_ = inner;
+    Chain chain{e.place, "entry/" + e.place, nullptr, {}};
+    Step step = open(e.place);
+    if (!inline_hook(inner->entry, step, chain, start->at)) continue;
+    chain_end(actions(start->transition.actions, 0, std::move(step), chain), start->at);
+  }
+}
+
+bool Translator::exit_composite(const sdl::Action& a, Step& step, Chain& chain, Outcome& out) {
+  const Level* inner = level_;
+  const sdl::CompositeState& c = *inner->composite;
+  std::string exit;
+  if (a.value && a.value->kind == sdl::Expr::Kind::Name) exit = folded(a.value->text);
+  const sdl::ExitConnection* connection = nullptr;
+  for (bool any : {false, true}) {
+    for (const sdl::State& s : inner->parent->body->states) {
+      if (connection != nullptr || s.is_any != any || !state_applies(s, folded(c.name))) continue;
+      for (const sdl::ExitConnection& x : s.connections) {
+        for (const std::string& point : x.exit_points) {
+          if (folded(point) == exit || point == "*") connection = &x;
+        }
+        if (x.exit_points.empty() && exit.empty()) connection = &x;
+      }
+    }
+  }
+  if (connection == nullptr) {
+    error(a.at, "no 'connect' of nested state '" + c.name + "' takes this return");
+    return false;
+  }
+  if (!inline_hook(inner->exit, step, chain, a.at)) return false;
+  level_ = inner->parent;
+  out.merge(actions(connection->transition.actions, 0, std::move(step), chain));
+  level_ = inner;
+  return true;
+}
+
+}  // namespace smcbip::taste2bip::detail
