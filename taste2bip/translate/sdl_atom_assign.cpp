@@ -34,6 +34,7 @@ std::size_t element_count(const Ref& r) {
 }  // namespace
 
 bool Translator::assign(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out) {
+  if (value.kind == sdl::Expr::Kind::Conditional) return assign_conditional(target, value, out);
   if (is_scalar(target)) {
     std::optional<Scalar> s = scalar(value, target.leaves[0].asn1_type);
     if (!s) return false;
@@ -49,6 +50,22 @@ bool Translator::assign(const Ref& target, const sdl::Expr& value, std::vector<s
   if (value.kind == sdl::Expr::Kind::Choice) return assign_choice(target, value, out);
   std::optional<Ref> source = reference(value);
   return source && assign_ref(target, *source, value.at, out);
+}
+
+bool Translator::assign_conditional(const Ref& target, const sdl::Expr& value,
+                                    std::vector<std::string>& out) {
+  std::optional<Scalar> condition = scalar(value.operands[0]);
+  std::vector<std::string> then, otherwise;
+  if (!condition || !assign(target, value.operands[1], then) ||
+      !assign(target, value.operands[2], otherwise)) {
+    return false;
+  }
+  std::string text = "if (" + condition->text + ") then";
+  for (const std::string& s : then) text += " " + s;
+  text += " else";
+  for (const std::string& s : otherwise) text += " " + s;
+  out.push_back(text + " fi");
+  return true;
 }
 
 bool Translator::assign_ref(const Ref& target, const Ref& source, const bipc::Location& at,

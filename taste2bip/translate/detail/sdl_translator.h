@@ -152,6 +152,7 @@ class Translator {
   bool assign_ref(const Ref& target, const Ref& source, const bipc::Location& at,
                   std::vector<std::string>& out);
   bool assign_sequence(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
+  bool assign_conditional(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
   bool assign_choice(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
   bool assign_statement(const sdl::Expr& target, const sdl::Expr& value,
                         std::vector<std::string>& out);
