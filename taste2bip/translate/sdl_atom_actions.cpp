@@ -5,13 +5,6 @@
 
 namespace smcbip::taste2bip::detail {
 
-namespace {
-
-/// The largest number of iterations of a `for` loop unrolled.
-constexpr std::size_t kMaxIterations = 64;
-
-}  // namespace
-
 Outcome Translator::actions(const std::vector<sdl::Action>& list, std::size_t from, Step step,
                             Chain& chain) {
   Outcome out;
@@ -123,73 +116,6 @@ bool Translator::task(const sdl::TaskElement& t, Step& step, Chain& chain, Outco
       return for_loop(t.loop.at(0), step, chain, out, ended);
   }
   return false;
-}
-
-bool Translator::for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out,
-                          bool& ended) {
-  std::vector<Binding> values;
-  const sdl::Expr& it = loop.iterable;
-  const bool range = it.kind == sdl::Expr::Kind::Call && !it.operands.empty() &&
-                     it.operands[0].kind == sdl::Expr::Kind::Name &&
-                     folded(it.operands[0].text) == "range";
-  if (range) {
-    std::vector<std::int64_t> bounds;
-    for (std::size_t k = 1; k < it.operands.size(); ++k) {
-      std::optional<std::int64_t> c = constant(it.operands[k]);
-      if (!c) {
-        error(it.operands[k].at, "a loop bound that is not a constant is not translated");
-        return false;
-      }
-      bounds.push_back(*c);
-    }
-    const std::int64_t low = bounds.size() >= 2 ? bounds[0] : 0;
-    const std::int64_t high = bounds.size() >= 2 ? bounds[1] : (bounds.empty() ? 0 : bounds[0]);
-    const std::int64_t by = bounds.size() >= 3 ? bounds[2] : 1;
-    if (by == 0 || bounds.empty() || bounds.size() > 3) {
-      error(it.at, "this range is not translated");
-      return false;
-    }
-    for (std::int64_t v = low; (by > 0 ? v < high : v > high); v += by) {
-      if (values.size() >= kMaxIterations) break;
-      values.push_back(Binding{std::nullopt, v});
-    }
-    if (values.size() >= kMaxIterations &&
-        low + by * static_cast<std::int64_t>(kMaxIterations) < high) {
-      error(it.at, "a loop of more than 64 iterations is not unrolled");
-      return false;
-    }
-  } else {
-    std::optional<Ref> seq = reference(it);
-    if (!seq) return false;
-    for (const Leaf& l : seq->leaves) {
-      if (l.asn1_type == nullptr && l.suffix == "length") {
-        error(it.at, "a loop over a SEQUENCE OF of variable size is not translated");
-        return false;
-      }
-    }
-    for (std::int64_t k = 0; seq->type && seq->type->kind == asn1::TypeKind::SequenceOf; ++k) {
-      bool found = false;
-      for (const Leaf& l : seq->leaves)
-        found = found || (!l.path.empty() && l.path[0] == std::to_string(k));
-      if (!found) break;
-      std::optional<Ref> e = element(*seq, k, it.at);
-      if (!e) return false;
-      values.push_back(Binding{*e, 0});
-    }
-  }
-  for (const Binding& value : values) {
-    scopes_.push_back({{folded(loop.variable), value}});
-    Outcome o = actions(loop.body.actions, 0, std::move(step), chain);
-    scopes_.pop_back();
-    for (Step& r : o.returns) out.returns.push_back(std::move(r));
-    std::optional<Step> next = join_falls(std::move(o.falls), chain);
-    if (!next) {
-      ended = true;
-      return true;
-    }
-    step = std::move(*next);
-  }
-  return true;
 }
 
 void Translator::terminate(Step step, const std::string& target, Chain& chain) {

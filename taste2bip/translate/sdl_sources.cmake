@@ -9,6 +9,7 @@ list(APPEND TASTE2BIP_SOURCES
   translate/sdl_atom_decision.cpp
   translate/sdl_atom_expr.cpp
   translate/sdl_atom_inputs.cpp
+  translate/sdl_atom_loops.cpp
   translate/sdl_atom_nested.cpp
   translate/sdl_atom_signature.cpp
   translate/sdl_atom_states.cpp

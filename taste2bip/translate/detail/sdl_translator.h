@@ -167,7 +167,12 @@ class Translator {
   Outcome actions(const std::vector<sdl::Action>& list, std::size_t from, Step step, Chain& chain);
   bool action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended);
   bool task(const sdl::TaskElement& t, Step& step, Chain& chain, Outcome& out, bool& ended);
+  // Loops (sdl_atom_loops.cpp).
   bool for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out, bool& ended);
+  bool unrolled(const sdl::ForLoop& loop, const std::vector<Binding>& values, Step& step,
+                Chain& chain, Outcome& out, bool& ended);
+  bool loop_in_net(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out);
+  bool element_values(const sdl::Expr& sequence, std::vector<Binding>& values);
   void terminate(Step step, const std::string& target, Chain& chain);
   /// The one step that continues after `falls` (a place joining them when there are several);
   /// nullopt when there is none.
