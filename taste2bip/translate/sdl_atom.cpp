@@ -20,10 +20,9 @@ std::string folded(const std::string& name) {
   return out;
 }
 
-bool Outcome::merge(Outcome other) {
+void Outcome::merge(Outcome other) {
   for (Step& s : other.falls) falls.push_back(std::move(s));
   for (Step& s : other.returns) returns.push_back(std::move(s));
-  return true;
 }
 
 Translator::Translator(const FunctionSignature& function, const sdl::Process& process,

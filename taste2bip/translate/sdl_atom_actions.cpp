@@ -56,49 +56,57 @@ bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome&
       ended = true;
       out.merge(label(a.name, a.at, std::move(step), chain, false, nullptr, 0));
       return true;
-    case K::NextState: {
-      ended = true;
-      if (a.name == "-" && chain.origin.empty()) {
-        error(a.at, "'nextstate -' in the start transition has no state to go back to");
-        return false;
-      }
-      std::optional<std::string> target = a.name == "-" ? std::optional<std::string>(chain.origin)
-                                                        : state_place(a.name, a.via, a.at);
-      if (target) terminate(std::move(step), *target, chain);
-      return target.has_value();
-    }
+    case K::NextState:
     case K::Stop:
       ended = true;
-      if (stop_place_.empty()) {
-        stop_place_ = fresh("STOPPED");
-        places_.push_back(stop_place_);
-        notes_.push_back("'stop' leads to the place " + stop_place_ + ", which has no way out");
-      }
-      terminate(std::move(step), stop_place_, chain);
-      return true;
+      return next_state(a, std::move(step), chain);
     case K::Return:
       ended = true;
-      if (inlining_.empty() && level_ != nullptr && level_->composite != nullptr) {
-        return exit_composite(a, step, chain, out);
-      }
-      if (inlining_.empty()) {
-        error(a.at, "return outside a procedure or a nested state");
-        return false;
-      }
-      if (a.value) {
-        auto result = procedure_results_.find(inlining_.back());
-        if (result == procedure_results_.end()) {
-          error(a.value->at, "a value returned by a procedure that declares no result type");
-          return false;
-        }
-        if (!assign(result->second, *a.value, step.statements)) return false;
-      }
-      out.returns.push_back(std::move(step));
-      return true;
+      return return_action(a, step, chain, out);
     default:
       error(a.at, "this action is not translated");
       return false;
   }
+}
+
+bool Translator::next_state(const sdl::Action& a, Step step, Chain& chain) {
+  if (a.kind == sdl::Action::Kind::Stop) {
+    if (stop_place_.empty()) {
+      stop_place_ = fresh("STOPPED");
+      places_.push_back(stop_place_);
+      notes_.push_back("'stop' leads to the place " + stop_place_ + ", which has no way out");
+    }
+    terminate(std::move(step), stop_place_, chain);
+    return true;
+  }
+  if (a.name == "-" && chain.origin.empty()) {
+    error(a.at, "'nextstate -' in the start transition has no state to go back to");
+    return false;
+  }
+  std::optional<std::string> target =
+      a.name == "-" ? std::optional<std::string>(chain.origin) : state_place(a.name, a.via, a.at);
+  if (target) terminate(std::move(step), *target, chain);
+  return target.has_value();
+}
+
+bool Translator::return_action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out) {
+  if (inlining_.empty() && level_ != nullptr && level_->composite != nullptr) {
+    return exit_composite(a, step, chain, out);
+  }
+  if (inlining_.empty()) {
+    error(a.at, "return outside a procedure or a nested state");
+    return false;
+  }
+  if (a.value) {
+    auto result = procedure_results_.find(inlining_.back());
+    if (result == procedure_results_.end()) {
+      error(a.value->at, "a value returned by a procedure that declares no result type");
+      return false;
+    }
+    if (!assign(result->second, *a.value, step.statements)) return false;
+  }
+  out.returns.push_back(std::move(step));
+  return true;
 }
 
 bool Translator::task(const sdl::TaskElement& t, Step& step, Chain& chain, Outcome& out,

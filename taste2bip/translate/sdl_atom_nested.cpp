@@ -7,8 +7,7 @@
 namespace smcbip::taste2bip::detail {
 
 std::string Translator::entry_place(const sdl::CompositeState& c, const std::string& entry) {
-  const std::string key =
-      std::to_string(reinterpret_cast<std::uintptr_t>(&c)) + "/" + folded(entry);
+  const auto key = std::make_pair(&c, folded(entry));
   if (auto it = entry_places_.find(key); it != entry_places_.end()) return it->second;
   const Level* inner = composite_levels_.at(&c);
   std::string base = inner->prefix.substr(0, inner->prefix.size() - 1);
@@ -17,6 +16,8 @@ std::string Translator::entry_place(const sdl::CompositeState& c, const std::str
   places_.push_back(place);
   entry_places_[key] = place;
   pending_entries_.push_back(PendingEntry{&c, entry, place});
+  notes_.push_back("entering nested state '" + c.name + "' (" + place +
+                   "): its start runs after the return of the call that entered it");
   return place;
 }
 

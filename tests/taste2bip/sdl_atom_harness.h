@@ -176,16 +176,11 @@ inline std::string data_of(const std::vector<std::string>& types, const std::str
   return text;
 }
 
-/// The package around the translated atom: driver `d` running `script`, sink `k`, atom `f`.
-inline std::string package_of(const Translated& t, const std::vector<Call>& script) {
-  std::vector<std::pair<std::string, std::vector<std::string>>> port_types = {{"Port", {}}};
-  collect_port_types(t.signature, port_types);
-  std::string text = "package sdltest\n";
-  for (const auto& [name, types] : port_types) text += port_type_text(name, types);
-  for (const std::string& f : t.atom->extern_functions) text += "  " + f + "\n";
-  text += t.atom->text;
-  std::string driver = "  atom type Driver()\n    clock t unit millisecond\n", sink, conns;
-  std::string sink_trans, sink_places = "s";
+/// The driver `d`: it calls the provided interfaces of `t` on `script` (each call at its date,
+/// the next after the return). Appends its connectors to `conns`.
+inline std::string driver_of(const Translated& t, const std::vector<Call>& script,
+                             std::string& conns) {
+  std::string driver = "  atom type Driver()\n    clock t unit millisecond\n";
   for (const SignalInterface& p : t.signature.provided) {
     std::string in, ret;
     driver += data_of(p.data_types(false), p.name + "_a", in);
@@ -198,31 +193,6 @@ inline std::string package_of(const Translated& t, const std::vector<Call>& scri
              port_type_name(p.data_types(true)) + " ret_" + p.name + "(f." + p.name +
              "_return, d.ret_" + p.name + ")\n";
   }
-  for (const SignalInterface& r : t.signature.required) {
-    std::string out, res;
-    sink += data_of(r.data_types(false), r.name + "_a", out);
-    sink += data_of(r.data_types(true), r.name + "_b", res);
-    sink += "    data int " + r.name + "_count = 0\n    export port " +
-            port_type_name(r.data_types(false)) + " got_" + r.name + "(" + out + ")\n";
-    conns += "    connector Pass_" + port_type_name(r.data_types(false)) + " out_" + r.name +
-             "(f." + r.name + "_out, k.got_" + r.name + ")\n";
-    const std::string back = r.synchronous() ? "s_" + r.name : "s";
-    // The sink answers a synchronous call with ten times its first value, set before `res`.
-    std::string answer;
-    for (std::size_t k = 0; r.synchronous() && k < r.data_types(true).size(); ++k) {
-      answer += " " + r.name + "_b" + std::to_string(k) + " = " + r.name + "_a0 * 10;";
-    }
-    sink_trans += "    on got_" + r.name + " from s to " + back + " do { " + r.name +
-                  "_count = " + r.name + "_count + 1;" + answer + " }\n";
-    if (r.synchronous()) {
-      sink += "    export port " + port_type_name(r.data_types(true)) + " res_" + r.name + "(" +
-              res + ")\n";
-      sink_places += ", s_" + r.name;
-      sink_trans += "    on res_" + r.name + " from s_" + r.name + " to s eager\n";
-      conns += "    connector Pass_" + port_type_name(r.data_types(true)) + " res_" + r.name +
-               "(k.res_" + r.name + ", f." + r.name + "_result)\n";
-    }
-  }
   driver += "    place d0";
   for (std::size_t k = 0; k < script.size(); ++k) {
     driver += ", w" + std::to_string(k) + ", d" + std::to_string(k + 1);
@@ -231,8 +201,7 @@ inline std::string package_of(const Translated& t, const std::vector<Call>& scri
   // the step before it.
   auto values = [&](std::size_t k) {
     std::string out;
-    if (k >= script.size()) return out;
-    for (std::size_t v = 0; v < script[k].values.size(); ++v) {
+    for (std::size_t v = 0; k < script.size() && v < script[k].values.size(); ++v) {
       out += " " + script[k].name + "_a" + std::to_string(v) + " = " + script[k].values[v] + ";";
     }
     return out;
@@ -246,13 +215,51 @@ inline std::string package_of(const Translated& t, const std::vector<Call>& scri
               " from w" + n + " to d" + std::to_string(k + 1) + " eager do {" + values(k + 1) +
               " }\n";
   }
-  text += driver + "  end\n  atom type Sink()\n" + sink + "    place " + sink_places +
-          "\n    initial to s\n" + sink_trans + "  end\n";
-  text +=
-      "  compound type Top()\n    component F f()\n    component Driver d()\n"
-      "    component Sink k()\n" +
-      conns + "  end\nend\n";
-  return text;
+  return driver + "  end\n";
+}
+
+/// The sink `k`: it takes every call of the required interfaces of `t`, counts them, and
+/// answers a synchronous one with ten times its first value. Appends its connectors to `conns`.
+inline std::string sink_of(const Translated& t, std::string& conns) {
+  std::string sink, transitions, places = "s";
+  for (const SignalInterface& r : t.signature.required) {
+    std::string out, res;
+    sink += data_of(r.data_types(false), r.name + "_a", out);
+    sink += data_of(r.data_types(true), r.name + "_b", res);
+    sink += "    data int " + r.name + "_count = 0\n    export port " +
+            port_type_name(r.data_types(false)) + " got_" + r.name + "(" + out + ")\n";
+    conns += "    connector Pass_" + port_type_name(r.data_types(false)) + " out_" + r.name +
+             "(f." + r.name + "_out, k.got_" + r.name + ")\n";
+    std::string answer;  // set before `res` fires, which reads it
+    for (std::size_t k = 0; r.synchronous() && k < r.data_types(true).size(); ++k) {
+      answer += " " + r.name + "_b" + std::to_string(k) + " = " + r.name + "_a0 * 10;";
+    }
+    transitions += "    on got_" + r.name + " from s to " +
+                   (r.synchronous() ? "s_" + r.name : "s") + " do { " + r.name +
+                   "_count = " + r.name + "_count + 1;" + answer + " }\n";
+    if (!r.synchronous()) continue;
+    sink += "    export port " + port_type_name(r.data_types(true)) + " res_" + r.name + "(" + res +
+            ")\n";
+    places += ", s_" + r.name;
+    transitions += "    on res_" + r.name + " from s_" + r.name + " to s eager\n";
+    conns += "    connector Pass_" + port_type_name(r.data_types(true)) + " res_" + r.name +
+             "(k.res_" + r.name + ", f." + r.name + "_result)\n";
+  }
+  return "  atom type Sink()\n" + sink + "    place " + places + "\n    initial to s\n" +
+         transitions + "  end\n";
+}
+
+/// The package around the translated atom: driver `d` running `script`, sink `k`, atom `f`.
+inline std::string package_of(const Translated& t, const std::vector<Call>& script) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> port_types = {{"Port", {}}};
+  collect_port_types(t.signature, port_types);
+  std::string text = "package sdltest\n";
+  for (const auto& [name, types] : port_types) text += port_type_text(name, types);
+  for (const std::string& f : t.atom->extern_functions) text += "  " + f + "\n";
+  std::string conns;
+  text += t.atom->text + driver_of(t, script, conns) + sink_of(t, conns);
+  return text + "  compound type Top()\n    component F f()\n    component Driver d()\n" +
+         "    component Sink k()\n" + conns + "  end\nend\n";
 }
 
 /// Runs the package of `t` for at most `steps` steps (seed 1).

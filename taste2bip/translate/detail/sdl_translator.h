@@ -55,7 +55,7 @@ struct Step {
 /// falling off its end, or (inside an inlined procedure) at a `return`.
 struct Outcome {
   std::vector<Step> falls, returns;
-  bool merge(Outcome other);
+  void merge(Outcome other);
 };
 
 /// The transition a chain of steps belongs to: the state it started in (for `nextstate -`),
@@ -142,6 +142,7 @@ class Translator {
   std::optional<Scalar> name_value(const sdl::Expr& e, const asn1::Type* hint);
   std::optional<Scalar> binary(const sdl::Expr& e);
   std::optional<Scalar> call_value(const sdl::Expr& e, const asn1::Type* hint);
+  std::optional<Scalar> bookkeeping_value(const std::string& f, const sdl::Expr& e);
   std::optional<std::int64_t> constant(const sdl::Expr& e);
   std::optional<Scalar> equality(const sdl::Expr& a, const sdl::Expr& b, bool equal,
                                  const bipc::Location& at);
@@ -173,6 +174,8 @@ class Translator {
                 Chain& chain, Outcome& out, bool& ended);
   bool loop_in_net(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out);
   bool element_values(const sdl::Expr& sequence, std::vector<Binding>& values);
+  bool next_state(const sdl::Action& a, Step step, Chain& chain);
+  bool return_action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out);
   void terminate(Step step, const std::string& target, Chain& chain);
   /// The one step that continues after `falls` (a place joining them when there are several);
   /// nullopt when there is none.
@@ -239,7 +242,7 @@ class Translator {
   std::map<const sdl::CompositeState*, Level*> composite_levels_;
   std::vector<StableState> stable_;  // in order of appearance
   const Level* level_ = nullptr;     // the level whose transition is being translated
-  std::map<std::string, std::string> entry_places_;
+  std::map<std::pair<const sdl::CompositeState*, std::string>, std::string> entry_places_;
   std::vector<PendingEntry> pending_entries_;
   std::map<std::string, std::string> timers_;  // folded name -> BIP base name
   std::map<std::string, std::string> label_places_;
