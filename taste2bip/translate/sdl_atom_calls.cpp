@@ -76,6 +76,9 @@ bool Translator::interface_call(const SignalInterface& r, const std::vector<sdl:
 bool Translator::call(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended) {
   const std::string f = folded(a.name);
   if (f == "set_timer" || f == "reset_timer") return timer_call(a, f == "set_timer", step);
+  if ((f == "set" && a.arguments.size() == 2) || (f == "reset" && a.arguments.size() == 1)) {
+    return sdl_timer_call(a, step);
+  }
   if (f == "writeln" || f == "write") return write_call(a, f == "writeln", step);
   if (const SignalInterface* r = find_interface(function_.required, a.name)) {
     return interface_call(*r, a.arguments, a.at, step, chain);
@@ -143,6 +146,22 @@ bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
   step.statements.push_back(t + "_clock = 0;");
   step.statements.push_back(t + "_armed = true;");
   return true;
+}
+
+bool Translator::sdl_timer_call(const sdl::Action& a, Step& step) {
+  if (a.arguments.size() == 1) return timer_call(a, false, step);
+  // SDL's `set(now + d, t)`: the timer expires d after now.
+  const sdl::Expr& when = a.arguments[0];
+  const bool relative = when.kind == sdl::Expr::Kind::Binary && when.op == sdl::Operator::Plus &&
+                        when.operands[0].kind == sdl::Expr::Kind::Name &&
+                        folded(when.operands[0].text) == "now";
+  if (!relative) {
+    error(when.at, "set with a time other than 'now + duration' is not translated");
+    return false;
+  }
+  sdl::Action set = a;
+  set.arguments[0] = when.operands[1];
+  return timer_call(set, true, step);
 }
 
 bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {

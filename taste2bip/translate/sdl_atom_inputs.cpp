@@ -34,9 +34,11 @@ void Translator::translate_state(const StableState& state) {
         timers_.count(name) > 0 ||
         std::any_of(function_.provided.begin(), function_.provided.end(),
                     [&](const SignalInterface& p) { return folded(p.name) == name; });
-    if (!known) {
-      error(h.signal->at, "input '" + h.signal->name +
-                              "' names no provided interface or timer of " + function_.name);
+    if (!known && reported_.insert(h.signal).second) {
+      error(h.signal->at,
+            name == "none" ? std::string("a spontaneous transition (input none) is not translated")
+                           : "input '" + h.signal->name +
+                                 "' names no provided interface or timer of " + function_.name);
     }
   }
   for (const SignalInterface& p : function_.provided) {

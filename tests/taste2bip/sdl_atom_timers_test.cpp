@@ -110,5 +110,28 @@ endprocess F;)");
   EXPECT_TRUE(report_times(r).empty());
 }
 
+TEST(SdlAtomTimers, SdlSetAndResetForms) {
+  const Translated t = translate_process(spec(), R"(process F;
+  timer t, u;
+  dcl n T_Int;
+  start;
+    call set(now + 30, t);
+    call set(now + 10, u);
+    call reset(u);
+    nextstate Wait;
+  state Wait;
+    input t;
+      output report(1);
+      nextstate Wait;
+    input u;
+      output report(2);
+      nextstate Wait;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  const RunRecord r = run_process(t, {});
+  EXPECT_EQ(report_times(r), (std::vector<double>{30}));
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::test

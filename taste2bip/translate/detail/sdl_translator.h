@@ -187,6 +187,7 @@ class Translator {
   bool output(const sdl::OutputSignal& s, Step& step, Chain& chain);
   bool call(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended);
   bool timer_call(const sdl::Action& a, bool set, Step& step);
+  bool sdl_timer_call(const sdl::Action& a, Step& step);
   bool write_call(const sdl::Action& a, bool newline, Step& step);
   bool interface_call(const SignalInterface& r, const std::vector<sdl::Expr>& args,
                       const bipc::Location& at, Step& step, Chain& chain);
@@ -244,7 +245,8 @@ class Translator {
   const Level* level_ = nullptr;     // the level whose transition is being translated
   std::map<std::pair<const sdl::CompositeState*, std::string>, std::string> entry_places_;
   std::vector<PendingEntry> pending_entries_;
-  std::map<std::string, std::string> timers_;  // folded name -> BIP base name
+  std::set<const sdl::InputSignal*> reported_;  // unknown inputs, reported once
+  std::map<std::string, std::string> timers_;   // folded name -> BIP base name
   std::map<std::string, std::string> label_places_;
   std::size_t inline_count_ = 0;
   std::string stop_place_;
