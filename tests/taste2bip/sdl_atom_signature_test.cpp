@@ -38,9 +38,10 @@ struct Read {
 };
 
 void read(Read& r) {
-  asn1::read_asn1("M DEFINITIONS ::= BEGIN\nT-Int ::= INTEGER (0..9)\n"
-                  "Pair ::= SEQUENCE { a T-Int, b BOOLEAN }\nEND\n",
-                  0, r.view, r.diags);
+  asn1::read_asn1(
+      "M DEFINITIONS ::= BEGIN\nT-Int ::= INTEGER (0..9)\n"
+      "Pair ::= SEQUENCE { a T-Int, b BOOLEAN }\nEND\n",
+      0, r.view, r.diags);
   asn1::resolve(r.view, r.diags);
   r.file = sdl::read_sdl(kSystem, 1, r.diags);
   ASSERT_FALSE(r.diags.has_errors());

@@ -133,5 +133,31 @@ endprocess F;)");
   EXPECT_EQ(report_times(r), (std::vector<double>{30}));
 }
 
+TEST(SdlAtomTimers, SavedCallWaitsForAStateThatTakesIt) {
+  FunctionSpec s = spec();
+  s.provided.push_back({"poke", {}});
+  const Translated t = translate_process(s, R"(process F;
+  timer t;
+  start;
+    call set_timer(20, t);
+    nextstate A;
+  state A;
+    save poke;
+    input t;
+      nextstate B;
+  endstate;
+  state B;
+    input poke;
+      output report(5);
+      nextstate B;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  ASSERT_EQ(t.atom->notes.size(), 1u);
+  EXPECT_EQ(t.atom->notes[0], "'poke' is saved in state A: the call waits there");
+  const RunRecord r = run_process(t, {{0, "poke", {}}});
+  EXPECT_EQ(report_times(r), (std::vector<double>{20}));  // the call at 0 waited for B
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::test

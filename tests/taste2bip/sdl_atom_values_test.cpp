@@ -3,6 +3,8 @@
 // elements written at a variable index, CHOICE values and their `present`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "tests/taste2bip/sdl_atom_harness.h"
 
 namespace smcbip::taste2bip::test {
@@ -88,6 +90,53 @@ endprocess F;)");
   ASSERT_TRUE(t.atom) << t.errors;
   const RunRecord r = run_process(t, {{0, "go", {"6"}}, {1, "go", {"0"}}});
   EXPECT_EQ(reports(r), (std::vector<double>{6, -1}));
+}
+
+TEST(SdlAtomValues, DecisionAnyTakesEitherAnswer) {
+  const Translated t = translate_process(spec(), R"(process F;
+  dcl n T_Int;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      decision any;
+        ('one'): output report(1);
+        ('two'): output report(2);
+      enddecision;
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  std::vector<Call> calls;
+  for (int k = 0; k < 12; ++k) calls.push_back({static_cast<double>(k), "go", {"0"}});
+  const std::vector<double> seen = reports(run_process(t, calls));
+  ASSERT_EQ(seen.size(), 12u);
+  EXPECT_NE(std::count(seen.begin(), seen.end(), 1.0), 0);
+  EXPECT_NE(std::count(seen.begin(), seen.end(), 2.0), 0);
+}
+
+TEST(SdlAtomValues, EnablingConditionKeepsTheCallWaiting) {
+  FunctionSpec s = spec();
+  s.provided.push_back({"open", {}});
+  const Translated t = translate_process(s, R"(process F;
+  dcl n T_Int, ready Boolean := false;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      provided ready;
+      output report(n);
+      nextstate Idle;
+    input open;
+      task ready := true;
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  // The driver's go at 0 waits until ready; nothing else can open it, so the run deadlocks.
+  const RunRecord r = run_process(t, {{0, "go", {"4"}}, {1, "open", {}}});
+  EXPECT_TRUE(reports(r).empty());
+  EXPECT_EQ(r.result.end, engines::RunEnd::Deadlock);
 }
 
 }  // namespace
