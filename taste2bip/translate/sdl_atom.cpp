@@ -12,6 +12,8 @@ namespace smcbip::taste2bip {
 
 namespace detail {
 
+std::string signal_key(const std::string& name) { return bip_identifier(folded(name)); }
+
 std::string folded(const std::string& name) {
   std::string out;
   for (char c : name) {
@@ -60,9 +62,9 @@ void Translator::declare_timers() {
   for (const sdl::Timer& t : process_.body.timers) names.push_back(t.name);
   for (const std::string& t : function_.context_timers) names.push_back(t);
   for (const std::string& t : names) {
-    if (timers_.count(folded(t)) > 0) continue;
+    if (timers_.count(signal_key(t)) > 0) continue;
     const std::string base = bip_identifier(t);
-    timers_[folded(t)] = base;
+    timers_[signal_key(t)] = base;
     for (const char* suffix : {"_clock", "_armed", "_value", "_expired"}) reserve(base + suffix);
     data_text_ += "    clock " + base + "_clock unit millisecond\n    data bool " + base +
                   "_armed = false\n    data int " + base + "_value = 0\n";

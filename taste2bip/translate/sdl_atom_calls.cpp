@@ -128,7 +128,7 @@ bool Translator::call_for_value(const sdl::Expr& target, const sdl::Expr& call, 
 bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
   const std::size_t expected = set ? 2 : 1;
   const sdl::Expr* timer = a.arguments.size() == expected ? &a.arguments.back() : nullptr;
-  auto it = timer && timer->kind == sdl::Expr::Kind::Name ? timers_.find(folded(timer->text))
+  auto it = timer && timer->kind == sdl::Expr::Kind::Name ? timers_.find(signal_key(timer->text))
                                                           : timers_.end();
   if (it == timers_.end()) {
     error(a.at, std::string(set ? "set_timer(duration, timer)" : "reset_timer(timer)") +

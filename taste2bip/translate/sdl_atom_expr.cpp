@@ -206,6 +206,12 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
 
 std::optional<Scalar> Translator::name_value(const sdl::Expr& e, const asn1::Type* hint) {
   const std::string name = folded(e.text);
+  // Compared with present(x), a name is an alternative of x's CHOICE before anything else.
+  if (hint != nullptr && hint->kind == asn1::TypeKind::Choice) {
+    for (std::size_t k = 0; k < hint->components.size(); ++k) {
+      if (folded(hint->components[k].name) == name) return Scalar{std::to_string(k + 1), "int"};
+    }
+  }
   for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
     auto found = it->find(name);
     if (found == it->end()) continue;
@@ -214,11 +220,6 @@ std::optional<Scalar> Translator::name_value(const sdl::Expr& e, const asn1::Typ
     if (r.leaves.size() == 1 && r.leaves[0].suffix.empty()) return Scalar{r.data, r.leaves[0].type};
     error(e.at, "'" + e.text + "' is a structured value, used where a single value is needed");
     return std::nullopt;
-  }
-  if (hint != nullptr && hint->kind == asn1::TypeKind::Choice) {
-    for (std::size_t k = 0; k < hint->components.size(); ++k) {
-      if (folded(hint->components[k].name) == name) return Scalar{std::to_string(k + 1), "int"};
-    }
   }
   if (hint != nullptr) {
     for (const asn1::Enumerant& en : hint->enumerants) {
@@ -282,7 +283,11 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
                                            const bipc::Location& at) {
   const asn1::Type* ta = type_of(a);
   const asn1::Type* tb = type_of(b);
-  const bool structured = [&] {
+  auto is_present = [](const sdl::Expr& x) {
+    return x.kind == sdl::Expr::Kind::Call && x.operands[0].kind == sdl::Expr::Kind::Name &&
+           folded(x.operands[0].text) == "present";
+  };
+  const bool structured = !is_present(a) && !is_present(b) && [&] {
     const auto kind = ta ? ta->kind : (tb ? tb->kind : asn1::TypeKind::Integer);
     return kind == asn1::TypeKind::Sequence || kind == asn1::TypeKind::Choice ||
            kind == asn1::TypeKind::SequenceOf;

@@ -19,35 +19,36 @@ void Translator::translate_state(const StableState& state) {
     for (const sdl::Input& input : s->inputs) {
       if (input.is_any && any_input.input == nullptr) any_input = Handler{&input, nullptr, level};
       for (const sdl::InputSignal& sig : input.signals) {
-        if (handled.count(folded(sig.name)) == 0) {
-          handled[folded(sig.name)] = Handler{&input, &sig, level};
+        if (handled.count(signal_key(sig.name)) == 0) {
+          handled[signal_key(sig.name)] = Handler{&input, &sig, level};
         }
       }
     }
     for (const std::string& n : s->saves) {
       save_all = save_all || n == "*";
-      saved.push_back(folded(n));
+      saved.push_back(signal_key(n));
     }
   }
   for (const auto& [name, h] : handled) {
     const bool known =
         timers_.count(name) > 0 ||
         std::any_of(function_.provided.begin(), function_.provided.end(),
-                    [&](const SignalInterface& p) { return folded(p.name) == name; });
+                    [&](const SignalInterface& p) { return signal_key(p.name) == name; });
     if (!known && reported_.insert(h.signal).second) {
       error(h.signal->at,
-            name == "none" ? std::string("a spontaneous transition (input none) is not translated")
-                           : "input '" + h.signal->name +
-                                 "' names no provided interface or timer of " + function_.name);
+            name == "none_" || name == "none"
+                ? std::string("a spontaneous transition (input none) is not translated")
+                : "input '" + h.signal->name + "' names no provided interface or timer of " +
+                      function_.name);
     }
   }
   for (const SignalInterface& p : function_.provided) {
-    auto h = handled.find(folded(p.name));
+    auto h = handled.find(signal_key(p.name));
     if (h != handled.end()) {
       input_transition(at, p, h->second);
     } else if (any_input.input != nullptr) {
       input_transition(at, p, any_input);
-    } else if (save_all || std::count(saved.begin(), saved.end(), folded(p.name)) > 0) {
+    } else if (save_all || std::count(saved.begin(), saved.end(), signal_key(p.name)) > 0) {
       notes_.push_back("'" + p.name + "' is saved in state " + at + ": the call waits there");
     } else {
       input_transition(at, p, Handler{nullptr, nullptr, state.level});

@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "tests/taste2bip/sdl_atom_real_support.h"
+#include "tests/taste2bip/sdl_atom_design_support.h"
 
 namespace smcbip::taste2bip::test {
 namespace {
@@ -54,6 +54,33 @@ TEST(SdlAtomRealFiles, OpenGeodeTestSuiteTranslatesOrIsRefusedWithLocations) {
   }
   std::cout << translated << " processes translated, " << refused << " refused\n";
   EXPECT_GE(translated, 23u);  // what the translation achieved when this test was written
+}
+
+TEST(SdlAtomRealFiles, TasteDesignsWithInterfaceViews) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
+  std::vector<fs::path> designs;
+  for (const char* group : {"esa-kazoo", "n7space-TASTE-SAMV71-RTEMS-Tests"}) {
+    for (const auto& entry : fs::directory_iterator(kData / "taste" / group)) {
+      const fs::path d = entry.path();
+      const bool has_view =
+          fs::exists(d / "InterfaceView.aadl") || fs::exists(d / "interfaceview.xml");
+      if (entry.is_directory() && has_view && !files_below(d, ".pr").empty()) designs.push_back(d);
+    }
+  }
+  std::sort(designs.begin(), designs.end());
+  std::size_t translated = 0, refused = 0;
+  for (const fs::path& design : designs) {
+    for (const ProcessResult& r : translate_design(design)) {
+      std::cout << design.filename().string() << "/" << r.file << " " << r.process << ": "
+                << (r.ok ? "translated" : r.message) << "\n";
+      (r.ok ? translated : refused) += 1;
+      if (!r.ok) {
+        EXPECT_EQ(r.message.rfind("bipc: ", 0), std::string::npos) << r.message;
+      }
+    }
+  }
+  std::cout << translated << " functions translated, " << refused << " refused\n";
+  EXPECT_GE(translated, 12u);  // what the translation achieved when this test was written
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -60,6 +61,25 @@ inline std::string single_atom_package(const FunctionSignature& signature, const
   }
   return text + atom.text + "  compound type Syst()\n    component " + atom.name +
          " f()\n  end\nend\n";
+}
+
+/// Empty when bipc accepts `atom` in a package of its own, else bipc's first diagnostic.
+inline std::string check_atom(const FunctionSignature& signature, const AtomType& atom) {
+  const tests::TempDir dir;
+  const fs::path file = dir.write("model.bip", single_atom_package(signature, atom));
+  bipc::FrontendResult checked = bipc::run_frontend({file.string(), {}, "Syst()"}, true);
+  if (checked.system) return {};
+  const std::string text = checked.diags.format(checked.model.files);
+  return "bipc: " + text.substr(0, text.find('\n'));
+}
+
+/// `name` with case and '-'/'_' ignored, as SDL matches names.
+inline std::string detail_folded(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    out += c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
 }
 
 /// The first line of `text`.
@@ -134,11 +154,8 @@ inline std::vector<ProcessResult> translate_folder(const fs::path& folder,
       std::optional<AtomType> atom;
       if (signature) atom = sdl_atom(*signature, *p, procedures, view, diags);
       if (atom) {
-        const tests::TempDir dir;
-        const fs::path file = dir.write("model.bip", single_atom_package(*signature, *atom));
-        bipc::FrontendResult checked = bipc::run_frontend({file.string(), {}, "Syst()"}, true);
-        r.ok = checked.system.has_value();
-        if (!r.ok) r.message = "bipc: " + first_line(checked.diags.format(checked.model.files));
+        r.message = check_atom(*signature, *atom);
+        r.ok = r.message.empty();
       } else if (r.message.empty()) {
         r.message = first_line(diags.format(files));
       }

@@ -266,4 +266,8 @@ class Translator {
 /// `name` folded for SDL's case-insensitive matching ('-' and '_' alike).
 std::string folded(const std::string& name);
 
+/// The name of a signal or timer as SDL spells it and as the signature's BIP identifier does
+/// (`clock` and `clock_`) folded alike.
+std::string signal_key(const std::string& name);
+
 }  // namespace smcbip::taste2bip::detail
