@@ -86,6 +86,26 @@ void Translator::declare_variables() {
   }
 }
 
+void Translator::declare_context() {
+  for (const ContextValue& c : function_.context) {
+    Ref ref{fresh("ctxt_" + c.name), c.leaves, nullptr};
+    if (const auto id = find_type_spelled(data_, c.asn1_type)) {
+      ref.type = definition(data_, data_.type(*id)->type);
+    }
+    declare_variable(ref.data, ref.leaves);
+    context_[folded(c.name)] = ref;
+    const std::string v = folded(c.value);
+    const bool number = !v.empty() && v.find_first_not_of("+-.0123456789e") == std::string::npos;
+    if (ref.leaves.size() == 1 && ref.leaves[0].suffix.empty() &&
+        (number || v == "true" || v == "false")) {
+      initial_statements_.push_back(ref.data + " = " + v + ";");
+    } else if (!c.value.empty()) {
+      notes_.push_back("context parameter " + c.name + " = " + c.value +
+                       ": not set (only single numbers and booleans are)");
+    }
+  }
+}
+
 void Translator::declare_procedure(const sdl::Procedure& p, const std::string& level_prefix) {
   if (p.is_external || p.is_referenced) return;
   const std::string prefix = level_prefix + bip_identifier(p.name) + "_";
@@ -124,6 +144,7 @@ std::optional<AtomType> Translator::run() {
     }
   }
   declare_timers();
+  declare_context();
   declare_variables();
   for (const auto& [name, list] : procedures_) {
     for (const sdl::Procedure* p : list) declare_procedure(*p);

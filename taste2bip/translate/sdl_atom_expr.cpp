@@ -78,6 +78,13 @@ std::optional<Ref> Translator::reference(const sdl::Expr& e) {
     return std::nullopt;
   }
   if (e.kind == K::Field) {
+    const sdl::Expr& record = e.operands[0];
+    // OpenGEODE's `<function>_ctxt.<parameter>`: a context parameter.
+    if (record.kind == K::Name && folded(record.text) == folded(function_.name + "_ctxt")) {
+      if (auto c = context_.find(folded(e.text)); c != context_.end()) return c->second;
+      error(e.at, "'" + e.text + "' is not a context parameter of " + function_.name);
+      return std::nullopt;
+    }
     std::optional<Ref> base = reference(e.operands[0]);
     return base ? field(*base, e.text, e.at) : std::nullopt;
   }

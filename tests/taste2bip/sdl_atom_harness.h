@@ -29,11 +29,16 @@ struct InterfaceSpec {
   InterfaceKind kind = InterfaceKind::Sporadic;
 };
 
-/// A function: its data view (ASN.1 module body), interfaces and context timers.
+struct ContextSpec {
+  std::string name, type, value;
+};
+
+/// A function: its data view (ASN.1 module body), interfaces, context timers and values.
 struct FunctionSpec {
   std::string asn1;
   std::vector<InterfaceSpec> provided, required;
   std::vector<std::string> timers;
+  std::vector<ContextSpec> context = {};
 };
 
 /// The translation of one process: its atom, or the diagnostics (`line:col: error: ...`).
@@ -74,6 +79,11 @@ inline Translated translate_process(const FunctionSpec& spec, const std::string&
   for (const auto& r : spec.required)
     t.signature.required.push_back(interface_of(r, t.view, diags));
   t.signature.context_timers = spec.timers;
+  for (const ContextSpec& c : spec.context) {
+    auto leaves = leaves_of(t.view, c.type, {}, diags);
+    t.signature.context.push_back(
+        ContextValue{c.name, c.type, c.value, leaves.value_or(std::vector<Leaf>{}), {}});
+  }
   if (!diags.has_errors() && file.processes.size() == 1) {
     std::vector<const sdl::Procedure*> procedures;
     for (const sdl::Procedure& p : file.procedures) procedures.push_back(&p);

@@ -139,5 +139,22 @@ endprocess F;)");
   EXPECT_EQ(r.result.end, engines::RunEnd::Deadlock);
 }
 
+TEST(SdlAtomValues, ContextParameterHasItsValue) {
+  FunctionSpec s = spec();
+  s.context.push_back({"limit", "T-Int", "42"});
+  const Translated t = translate_process(s, R"(process F;
+  dcl n T_Int;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      output report(n + f_ctxt.limit);
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  EXPECT_EQ(reports(run_process(t, {{0, "go", {"1"}}})), (std::vector<double>{43}));
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::test

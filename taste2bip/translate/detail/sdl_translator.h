@@ -123,6 +123,7 @@ class Translator {
   // Declarations (sdl_atom.cpp).
   void declare_timers();
   void declare_variables();
+  void declare_context();
   void declare_procedure(const sdl::Procedure& p, const std::string& level_prefix = {});
   std::string text() const;
 
@@ -245,6 +246,7 @@ class Translator {
   const Level* level_ = nullptr;     // the level whose transition is being translated
   std::map<std::pair<const sdl::CompositeState*, std::string>, std::string> entry_places_;
   std::vector<PendingEntry> pending_entries_;
+  std::map<std::string, Ref> context_;          // context parameters by folded name
   std::set<const sdl::InputSignal*> reported_;  // unknown inputs, reported once
   std::map<std::string, std::string> timers_;   // folded name -> BIP base name
   std::map<std::string, std::string> label_places_;
