@@ -46,6 +46,28 @@ endprocess F;)");
   EXPECT_EQ(reports(r), (std::vector<double>{10 + 6, 60 + 6}));
 }
 
+TEST(SdlAtomValues, LoopOverTheElementsOfAVariableSizeSequence) {
+  const Translated t = translate_process(spec(), R"(process F;
+  dcl n T_Int, s T_Int, v Vec;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      decision n;
+        (1): task v := {7};
+        else: task v := {1, 2, 3};
+      enddecision;
+      task s := 0;
+      task for x in v: s := s * 10 + x; endfor;
+      output report(s);
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  const RunRecord r = run_process(t, {{0, "go", {"1"}}, {1, "go", {"0"}}});
+  EXPECT_EQ(reports(r), (std::vector<double>{7, 123}));
+}
+
 TEST(SdlAtomValues, ProcedureReturnsAValueIntoATask) {
   const Translated t = translate_process(spec(), R"(process F;
   dcl n T_Int, m T_Int;

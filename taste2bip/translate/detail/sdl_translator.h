@@ -174,7 +174,12 @@ class Translator {
   bool unrolled(const sdl::ForLoop& loop, const std::vector<Binding>& values, Step& step,
                 Chain& chain, Outcome& out, bool& ended);
   bool loop_in_net(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out);
-  bool element_values(const sdl::Expr& sequence, std::vector<Binding>& values);
+  bool elements_in_net(const sdl::ForLoop& loop, const Ref& seq, const Leaf& length, Step& step,
+                       Chain& chain, Outcome& out);
+  bool net_loop(const sdl::ForLoop& loop, const std::string& var, const std::string& low,
+                const std::string& high, std::int64_t by, std::vector<std::string> prelude,
+                const Binding& binding, Step& step, Chain& chain, Outcome& out);
+  bool element_values(const Ref& seq, const sdl::Expr& sequence, std::vector<Binding>& values);
   bool next_state(const sdl::Action& a, Step step, Chain& chain);
   bool return_action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out);
   void terminate(Step step, const std::string& target, Chain& chain);
