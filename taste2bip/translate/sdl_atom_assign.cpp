@@ -147,6 +147,54 @@ bool Translator::assign_choice(const Ref& target, const sdl::Expr& value,
   return false;
 }
 
+std::optional<std::string> Translator::literal_equals(const Ref& r, const sdl::Expr& literal) {
+  const asn1::TypeKind kind = r.type ? r.type->kind : asn1::TypeKind::Integer;
+  std::vector<std::string> parts;
+  if (literal.kind == sdl::Expr::Kind::Choice && kind == asn1::TypeKind::Choice) {
+    const Leaf* present = bookkeeping(r, "present");
+    for (std::size_t k = 0; present && k < r.type->components.size(); ++k) {
+      if (folded(r.type->components[k].name) != folded(literal.text)) continue;
+      parts.push_back(leaf_name(r.data, *present) + " == " + std::to_string(k + 1));
+      std::optional<Ref> f = field(r, literal.text, literal.at);
+      std::optional<std::string> inner = f ? literal_equals(*f, literal.operands[0]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (literal.kind == sdl::Expr::Kind::Sequence && kind == asn1::TypeKind::SequenceOf) {
+    if (const Leaf* length = bookkeeping(r, "length")) {
+      parts.push_back(leaf_name(r.data, *length) +
+                      " == " + std::to_string(literal.operands.size()));
+    }
+    for (std::size_t k = 0; k < literal.operands.size(); ++k) {
+      std::optional<Ref> e = element(r, static_cast<std::int64_t>(k), literal.operands[k].at);
+      std::optional<std::string> inner = e ? literal_equals(*e, literal.operands[k]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (literal.kind == sdl::Expr::Kind::Sequence && kind == asn1::TypeKind::Sequence) {
+    for (std::size_t k = 0; k < literal.operands.size() && k < literal.field_names.size(); ++k) {
+      std::optional<Ref> f = field(r, literal.field_names[k], literal.operands[k].at);
+      std::optional<std::string> inner = f ? literal_equals(*f, literal.operands[k]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (is_scalar(r)) {
+    std::optional<Scalar> s = scalar(literal, r.leaves[0].asn1_type);
+    if (!s) return std::nullopt;
+    parts.push_back(r.data + " == " + s->text);
+  } else {
+    error(literal.at, "this value cannot be compared with '" + r.data + "'");
+    return std::nullopt;
+  }
+  if (parts.empty()) {
+    error(literal.at, "this value does not match the type of '" + r.data + "'");
+    return std::nullopt;
+  }
+  std::string text;
+  for (const std::string& p : parts) text += (text.empty() ? "" : " && ") + p;
+  return "(" + text + ")";
+}
+
 bool Translator::assign_statement(const sdl::Expr& target, const sdl::Expr& value,
                                   std::vector<std::string>& out) {
   const bool variable_index = target.kind == sdl::Expr::Kind::Call && target.operands.size() == 2 &&

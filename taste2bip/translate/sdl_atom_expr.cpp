@@ -305,6 +305,15 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
     if (!x || !y) return std::nullopt;
     return Scalar{"(" + x->text + op + y->text + ")", "bool"};
   }
+  auto literal = [](const sdl::Expr& x) {
+    return x.kind == sdl::Expr::Kind::Sequence || x.kind == sdl::Expr::Kind::Choice;
+  };
+  if (literal(a) || literal(b)) {
+    std::optional<Ref> r = reference(literal(a) ? b : a);
+    std::optional<std::string> text = r ? literal_equals(*r, literal(a) ? a : b) : std::nullopt;
+    if (!text) return std::nullopt;
+    return Scalar{equal ? "(" + *text + ")" : "!(" + *text + ")", "bool"};
+  }
   std::optional<Ref> x = reference(a), y = reference(b);
   if (!x || !y) return std::nullopt;
   std::string text;

@@ -80,7 +80,7 @@ TEST(SdlAtomRealFiles, TasteDesignsWithInterfaceViews) {
     }
   }
   std::cout << translated << " functions translated, " << refused << " refused\n";
-  EXPECT_GE(translated, 13u);  // what the translation achieved when this test was written
+  EXPECT_GE(translated, 14u);  // what the translation achieved when this test was written
 }
 
 }  // namespace

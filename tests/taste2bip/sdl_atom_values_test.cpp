@@ -161,6 +161,31 @@ endprocess F;)");
   EXPECT_EQ(r.result.end, engines::RunEnd::Deadlock);
 }
 
+TEST(SdlAtomValues, StructuredValuesComparedWithLiterals) {
+  const Translated t = translate_process(spec(), R"(process F;
+  dcl n T_Int, e Either, v Vec;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      task e := num: n, v := {n, 2};
+      decision e;
+        (num: 3): output report(30);
+        (flag: true): output report(-1);
+        else:
+          decision v = {4, 2};
+            (true): output report(42);
+            (false): output report(0);
+          enddecision;
+      enddecision;
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  const RunRecord r = run_process(t, {{0, "go", {"3"}}, {1, "go", {"4"}}, {2, "go", {"5"}}});
+  EXPECT_EQ(reports(r), (std::vector<double>{30, 42, 0}));
+}
+
 TEST(SdlAtomValues, ContextParameterHasItsValue) {
   FunctionSpec s = spec();
   s.context.push_back({"limit", "T-Int", "42"});

@@ -156,6 +156,7 @@ class Translator {
   bool assign_sequence(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
   bool assign_conditional(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
   bool assign_choice(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out);
+  std::optional<std::string> literal_equals(const Ref& r, const sdl::Expr& literal);
   bool assign_statement(const sdl::Expr& target, const sdl::Expr& value,
                         std::vector<std::string>& out);
 
@@ -187,6 +188,8 @@ class Translator {
   /// nullopt when there is none.
   std::optional<Step> join_falls(std::vector<Step> falls, Chain& chain);
   Outcome decision(const sdl::Action& a, Step step, Chain& chain);
+  std::optional<std::string> structured_answer(const sdl::Expr& question,
+                                               const sdl::Answer& answer);
   std::optional<std::string> answer_guard(const sdl::Expr& question, const sdl::Answer& answer);
   Outcome label(const std::string& name, const bipc::Location& at, Step step, Chain& chain,
                 bool sequential, const std::vector<sdl::Action>* list, std::size_t index);
