@@ -1,5 +1,7 @@
 // Outputs and calls: required interfaces (their data set, then `r_out`, and `r_result` for a
 // synchronous one), timers, writeln/write as printf, and procedures inlined at the call.
+#include <algorithm>
+
 #include "taste2bip/names.h"
 #include "taste2bip/translate/detail/sdl_translator.h"
 
@@ -58,7 +60,15 @@ bool Translator::interface_call(const SignalInterface& r, const std::vector<sdl:
   std::string next = place(chain);
   close(std::move(step), next);
   step = Step{false, r.name + "_out", next, "", {}};
-  if (!r.synchronous()) return true;
+  if (!r.synchronous()) {
+    const bool outs = std::any_of(r.parameters.begin(), r.parameters.end(),
+                                  [](const SignalParameter& p) { return p.out; });
+    if (outs) {
+      notes_.push_back("'" + r.name + "' reaches no synchronous interface: the call does not " +
+                       "wait, its out parameters keep their values");
+    }
+    return true;
+  }
   next = place(chain);
   close(std::move(step), next);
   step = Step{false, r.name + "_result", next, "", {}};

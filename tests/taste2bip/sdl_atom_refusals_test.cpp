@@ -59,5 +59,30 @@ TEST(SdlAtomRefusals, TransitionWithoutTerminator) {
             std::string::npos);
 }
 
+TEST(SdlAtomRefusals, StateAggregationAndSpontaneousTransition) {
+  const Translated t = translate_process(spec(), R"(process F;
+  state aggregation Both;
+  substructure
+    state A;
+    substructure
+      start;
+        nextstate S;
+      state S;
+      endstate;
+    endsubstructure;
+  endsubstructure;
+  start;
+    nextstate Idle;
+  state Idle;
+    input none;
+      nextstate Both;
+  endstate;
+endprocess F;)");
+  EXPECT_FALSE(t.atom);
+  EXPECT_EQ(t.errors,
+            "test.pr:2:3: error: state aggregation 'Both' (parallel substates) is not translated\n"
+            "test.pr:15:11: error: a spontaneous transition (input none) is not translated\n");
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::test
