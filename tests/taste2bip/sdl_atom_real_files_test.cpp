@@ -56,6 +56,54 @@ TEST(SdlAtomRealFiles, OpenGeodeTestSuiteTranslatesOrIsRefusedWithLocations) {
   EXPECT_GE(translated, 23u);  // what the translation achieved when this test was written
 }
 
+/// Each process of `system` with one action of one input transition removed, translated: an
+/// atom or an error, never a crash or a silent failure. Returns the number of mutants.
+std::size_t translate_mutants(const sdl::System& system, const std::vector<sdl::Block>& blocks,
+                              const asn1::DataView& view) {
+  std::size_t mutants = 0;
+  for (const sdl::Block& b : blocks) {
+    mutants += translate_mutants(system, b.blocks, view);
+    for (const sdl::Process& p : b.processes) {
+      bipc::Diagnostics diags;
+      const auto signature = sdl_system_signature(system, p.name, view, diags);
+      if (!signature || p.is_referenced) continue;
+      for (std::size_t s = 0; s < p.body.states.size(); ++s) {
+        for (std::size_t i = 0; i < p.body.states[s].inputs.size(); ++i) {
+          for (std::size_t k = 0; k < p.body.states[s].inputs[i].transition.actions.size(); ++k) {
+            sdl::Process mutant = p;
+            auto& actions = mutant.body.states[s].inputs[i].transition.actions;
+            actions.erase(actions.begin() + static_cast<std::ptrdiff_t>(k));
+            bipc::Diagnostics mutant_diags;
+            const auto atom = sdl_atom(*signature, mutant, {}, view, mutant_diags);
+            EXPECT_TRUE(atom.has_value() || mutant_diags.has_errors()) << p.name;
+            ++mutants;
+          }
+        }
+      }
+    }
+  }
+  return mutants;
+}
+
+TEST(SdlAtomRealFiles, MutantsTranslateOrAreRefused) {
+  if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
+  std::size_t mutants = 0;
+  for (const auto& entry : fs::directory_iterator(kData / "taste" / "esa-opengeode-testsuite")) {
+    if (!entry.is_directory()) continue;
+    bipc::Diagnostics diags;
+    asn1::DataView view;
+    for (const fs::path& a : files_with(entry.path(), ".asn")) {
+      asn1::read_asn1(file_text(a), 0, view, diags);
+    }
+    asn1::resolve(view, diags);
+    for (const fs::path& pr : files_with(entry.path(), ".pr")) {
+      const sdl::SdlFile file = sdl::read_sdl(file_text(pr), 1, diags);
+      for (const sdl::System& s : file.systems) mutants += translate_mutants(s, s.blocks, view);
+    }
+  }
+  EXPECT_GE(mutants, 50u);
+}
+
 TEST(SdlAtomRealFiles, TasteDesignsWithInterfaceViews) {
   if (!fs::is_directory(kData)) GTEST_SKIP() << "no ../shared/data in this clone";
   std::vector<fs::path> designs;
