@@ -169,7 +169,7 @@ std::string Translator::text() const {
   std::string out = "  atom type " + function_.name + "()\n";
   out += interface_declarations(function_);
   out += data_text_ + ports_text_;
-  for (const std::string& port : branch_ports_) out += "    port Port " + port + "()\n";
+  for (const std::string& port : port_order_) out += "    port Port " + port + "()\n";
   std::string places;
   for (const std::string& p : places_) places += (places.empty() ? "" : ", ") + p;
   if (!places.empty()) out += "    place " + places + "\n";

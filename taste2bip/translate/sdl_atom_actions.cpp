@@ -135,6 +135,7 @@ void Translator::terminate(Step step, const std::string& target, Chain& chain) {
     close(std::move(step), before);
     step = Step{false, chain.serving->name + "_return", before, "", {}};
   }
+  if (!chain.busy.empty()) step.statements.push_back(chain.busy + " = false;");
   close(std::move(step), target);
 }
 

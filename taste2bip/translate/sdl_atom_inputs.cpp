@@ -42,7 +42,14 @@ void Translator::translate_state(const StableState& state) {
                       function_.name);
     }
   }
+  const auto [region, aggregation] = region_of(state);
+  auto owned = [&](const std::string& key) {
+    return region == nullptr || owner_region(*aggregation, key) == region;
+  };
+  if (region != nullptr) refuse_outer_transitions(state, *aggregation, blocks);
+  aggregation_ = aggregation;
   for (const SignalInterface& p : function_.provided) {
+    if (!owned(signal_key(p.name))) continue;
     auto h = handled.find(signal_key(p.name));
     if (h != handled.end()) {
       input_transition(at, p, h->second);
@@ -55,10 +62,34 @@ void Translator::translate_state(const StableState& state) {
     }
   }
   for (const auto& [name, base] : timers_) {
+    if (!owned(name)) continue;
     auto h = handled.find(name);
     timer_transition(at, base, h != handled.end() ? h->second : any_input);
   }
   continuous_transitions(state, blocks);
+}
+
+void Translator::refuse_outer_transitions(
+    const StableState& state, const Level& aggregation,
+    const std::vector<std::pair<const sdl::State*, const Level*>>& blocks) {
+  std::vector<const Level*> inside;
+  for (const Level* l = state.level; l != &aggregation; l = l->parent) inside.push_back(l);
+  for (const auto& [s, level] : blocks) {
+    const bool outer = std::find(inside.begin(), inside.end(), level) == inside.end();
+    const bool acts = !s->inputs.empty() || !s->continuous.empty() || !s->connections.empty();
+    if (outer && acts && refused_blocks_.insert(s).second) {
+      error(s->at, "transitions of a state enclosing a state aggregation are not translated");
+    }
+  }
+}
+
+std::pair<const sdl::CompositeState*, const Level*> Translator::region_of(
+    const StableState& state) const {
+  for (const Level* level = state.level; level->parent != nullptr; level = level->parent) {
+    const sdl::CompositeState* above = level->parent->composite;
+    if (above != nullptr && above->is_aggregation) return {level->composite, level->parent};
+  }
+  return {nullptr, nullptr};
 }
 
 void Translator::input_transition(const std::string& state, const SignalInterface& p,
@@ -66,7 +97,7 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
   const sdl::Input* input = h.input;
   const sdl::InputSignal* signal = h.signal;
   level_ = h.level;
-  Chain chain{state, state + "/" + p.name, &p, {}};
+  Chain chain{state, state + "/" + p.name, &p, {}, {}};
   Step step{false, p.name + "_in", state, "", {}};
   if (signal != nullptr) {
     if (signal->parameters.size() > p.parameters.size()) {
@@ -88,17 +119,17 @@ void Translator::input_transition(const std::string& state, const SignalInterfac
       }
     }
   }
-  if (input == nullptr) {
-    terminate(std::move(step), state, chain);
-    return;
-  }
-  if (input->enabling) {
+  if (input != nullptr && input->enabling) {
     std::optional<Scalar> guard = scalar(*input->enabling);
     if (!guard) return;
     step.guard = guard->text;
     notes_.push_back("'" + p.name + "' waits in state " + state +
-                     " while its enabling "
-                     "condition is false");
+                     " while its enabling condition is false");
+  }
+  start_in_region(aggregation_, step, chain);
+  if (input == nullptr) {
+    terminate(std::move(step), state, chain);
+    return;
   }
   chain_end(actions(input->transition.actions, 0, std::move(step), chain), input->at);
 }
@@ -107,16 +138,18 @@ void Translator::timer_transition(const std::string& state, const std::string& t
                                   const Handler& h) {
   const sdl::Input* input = h.input;
   level_ = h.level;
-  Chain chain{state, state + "/" + timer, nullptr, {}};
+  Chain chain{state, state + "/" + timer, nullptr, {}, {}};
   Step step{false,
             timer + "_expired",
             state,
             timer + "_armed && " + timer + "_clock >= " + timer + "_value",
             {timer + "_armed = false;"}};
   if (input == nullptr) {
+    if (aggregation_ != nullptr) step.guard += " && !" + aggregation_->busy;
     close(std::move(step), state);
     return;
   }
+  start_in_region(aggregation_, step, chain);
   chain_end(actions(input->transition.actions, 0, std::move(step), chain), input->at);
 }
 
@@ -152,8 +185,10 @@ void Translator::continuous_transitions(
     const std::string guard =
         higher.empty() ? condition->text : condition->text + " && !(" + higher + ")";
     higher += (higher.empty() ? "" : " || ") + condition->text;
-    Chain chain{place, place + "/continuous" + std::to_string(k), nullptr, {}};
-    chain_end(actions(c.transition.actions, 0, open(place, k, guard), chain), c.at);
+    Chain chain{place, place + "/continuous" + std::to_string(k), nullptr, {}, {}};
+    Step step = open(place, k, guard);
+    start_in_region(aggregation_, step, chain);
+    chain_end(actions(c.transition.actions, 0, std::move(step), chain), c.at);
   }
   if (!signals.empty()) {
     notes_.push_back("the continuous signals of state " + place +

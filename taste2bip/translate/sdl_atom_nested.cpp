@@ -38,6 +38,10 @@ void Translator::translate_entries() {
     const PendingEntry e = pending_entries_.back();
     pending_entries_.pop_back();
     const Level* inner = composite_levels_.at(e.composite);
+    if (e.composite->is_aggregation) {
+      enter_regions(e);
+      continue;
+    }
     const sdl::Start* start = nullptr;
     for (const sdl::Start& s : e.composite->body.starts) {
       if (folded(s.entry_point) == folded(e.entry)) start = &s;
@@ -48,16 +52,61 @@ void Translator::translate_entries() {
       continue;
     }
     level_ = inner;
-    Chain chain{e.place, "entry/" + e.place, nullptr, {}};
+    Chain chain{e.place, "entry/" + e.place, nullptr, {}, {}};
     Step step = open(e.place);
     if (!inline_hook(inner->entry, step, chain, start->at)) continue;
     chain_end(actions(start->transition.actions, 0, std::move(step), chain), start->at);
   }
 }
 
+void Translator::enter_regions(const PendingEntry& e) {
+  const sdl::CompositeState& a = *e.composite;
+  if (!e.entry.empty() || a.body.composite_states.empty()) {
+    error(a.at, "state aggregation '" + a.name + "' is entered by its regions' starts only");
+    return;
+  }
+  std::string to;
+  for (const sdl::CompositeState& region : a.body.composite_states) {
+    to += (to.empty() ? "" : ", ") + entry_place(region, "");
+  }
+  // One step marks a place of every region: the regions then run side by side.
+  transitions_text_ += "    on " + branch_port(0) + " from " + e.place + " to " + to + " eager\n";
+  notes_.push_back("the regions of state aggregation '" + a.name +
+                   "' interleave their transitions; each call goes to the region that has an "
+                   "input for it (else the first)");
+}
+
+const sdl::CompositeState* Translator::owner_region(const Level& aggregation,
+                                                    const std::string& key) const {
+  const sdl::CompositeState* first = nullptr;
+  for (const sdl::CompositeState& region : aggregation.composite->body.composite_states) {
+    first = first ? first : &region;
+    if (has_input(region.body, key)) return &region;
+  }
+  return first;
+}
+
+bool Translator::has_input(const sdl::Body& body, const std::string& key) const {
+  for (const sdl::State& s : body.states) {
+    for (const sdl::Input& i : s.inputs) {
+      for (const sdl::InputSignal& sig : i.signals) {
+        if (signal_key(sig.name) == key) return true;
+      }
+    }
+  }
+  for (const sdl::CompositeState& c : body.composite_states) {
+    if (has_input(c.body, key)) return true;
+  }
+  return false;
+}
+
 bool Translator::exit_composite(const sdl::Action& a, Step& step, Chain& chain, Outcome& out) {
   const Level* inner = level_;
   const sdl::CompositeState& c = *inner->composite;
+  if (c.is_aggregation || (inner->parent->composite && inner->parent->composite->is_aggregation)) {
+    error(a.at, "leaving a state aggregation or one of its regions is not translated");
+    return false;
+  }
   std::string exit;
   if (a.value && a.value->kind == sdl::Expr::Kind::Name) exit = folded(a.value->text);
   const sdl::ExitConnection* connection = nullptr;

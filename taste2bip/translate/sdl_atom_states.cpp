@@ -41,8 +41,13 @@ Level* Translator::build_level(const sdl::Body& body, const std::string& prefix,
   level.parent = parent;
   level.composite = composite;
   for (const sdl::CompositeState& c : body.composite_states) {
-    if (c.is_aggregation) {
-      error(c.at, "state aggregation '" + c.name + "' (parallel substates) is not translated");
+    if (c.is_aggregation && !c.body.states.empty() &&
+        std::any_of(c.body.states.begin(), c.body.states.end(), [&](const sdl::State& s) {
+          return !s.inputs.empty() || !s.continuous.empty();
+        })) {
+      error(c.at, "state aggregation '" + c.name +
+                      "' with transitions of its own (besides its "
+                      "regions') is not translated");
     }
     level.composites[folded(c.name)] = &c;
   }
@@ -58,6 +63,10 @@ Level* Translator::build_level(const sdl::Body& body, const std::string& prefix,
     for (const sdl::ExitConnection& c : s.connections) scan_nextstates(level, c.transition.actions);
   }
   if (composite != nullptr) declare_level(level);
+  if (composite != nullptr && composite->is_aggregation) {
+    level.busy = fresh(prefix + "busy");
+    data_text_ += "    data bool " + level.busy + " = false\n";
+  }
   for (const sdl::CompositeState& c : body.composite_states) {
     composite_levels_[&c] = build_level(c.body, prefix + bip_identifier(c.name) + "_", &level, &c);
   }
@@ -142,7 +151,7 @@ void Translator::translate_start() {
     return;
   }
   level_ = levels_.front().get();
-  Chain chain{"", "start", nullptr, {}};
+  Chain chain{"", "start", nullptr, {}, {}};
   Step step{true, "", "", "", initial_statements_};
   chain_end(actions(start->transition.actions, 0, std::move(step), chain), start->at);
 }

@@ -37,11 +37,27 @@ std::string Translator::place(const Chain& chain) {
 }
 
 std::string Translator::branch_port(std::size_t k) {
-  while (branch_ports_.size() <= k) {
-    const std::size_t n = branch_ports_.size();
-    branch_ports_.push_back(fresh(n == 0 ? "silent" : "silent_" + std::to_string(n)));
+  std::string family;
+  for (const Level* l = level_; l != nullptr && l->parent != nullptr; l = l->parent) {
+    if (l->parent->composite != nullptr && l->parent->composite->is_aggregation) {
+      family = l->prefix;
+      break;
+    }
   }
-  return branch_ports_[k];
+  std::vector<std::string>& ports = branch_ports_[family];
+  while (ports.size() <= k) {
+    const std::size_t n = ports.size();
+    ports.push_back(fresh(family + (n == 0 ? "silent" : "silent_" + std::to_string(n))));
+    port_order_.push_back(ports.back());
+  }
+  return ports[k];
+}
+
+void Translator::start_in_region(const Level* aggregation, Step& step, Chain& chain) const {
+  if (aggregation == nullptr) return;
+  chain.busy = aggregation->busy;
+  step.guard = step.guard.empty() ? "!" + chain.busy : "(" + step.guard + ") && !" + chain.busy;
+  step.statements.insert(step.statements.begin(), chain.busy + " = true;");
 }
 
 }  // namespace smcbip::taste2bip::detail

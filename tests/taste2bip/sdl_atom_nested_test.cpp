@@ -73,5 +73,54 @@ endprocess F;)");
   EXPECT_EQ(r.events.back().data.at("f.n"), 103);  // the entry procedure ran on each entry
 }
 
+TEST(SdlAtomNested, StateAggregationRunsItsRegionsSideBySide) {
+  const FunctionSpec spec{"T-Int ::= INTEGER (-1000..1000)\n",
+                          {{"go", {{"x", "T-Int"}}}, {"poke", {}}},
+                          {{"report", {{"v", "T-Int"}}}},
+                          {}};
+  const Translated t = translate_process(spec, R"(process F;
+  dcl n T_Int := 0, flag Boolean := false;
+  state aggregation Both;
+  substructure
+    state Left;
+    substructure
+      start;
+        nextstate L1;
+      state L1;
+        input go(n);
+          output report(n);
+          task flag := true;
+          nextstate L1;
+      endstate;
+    endsubstructure;
+    state Right;
+    substructure
+      start;
+        nextstate R1;
+      state R1;
+        provided flag;
+          task flag := false;
+          output report(100);
+          nextstate R1;
+        input poke;
+          output report(7);
+          nextstate R1;
+      endstate;
+    endsubstructure;
+    state Left;
+    endstate;
+    state Right;
+    endstate;
+  endsubstructure;
+  start;
+    nextstate Both;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  // go goes to the left region, poke to the right one; the right region's continuous signal
+  // sees the flag the left one sets.
+  const RunRecord r = run_process(t, {{0, "go", {"5"}}, {1, "poke", {}}});
+  EXPECT_EQ(reports(r), (std::vector<double>{5, 100, 7}));
+}
+
 }  // namespace
 }  // namespace smcbip::taste2bip::test

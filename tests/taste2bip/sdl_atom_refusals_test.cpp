@@ -59,7 +59,7 @@ TEST(SdlAtomRefusals, TransitionWithoutTerminator) {
             std::string::npos);
 }
 
-TEST(SdlAtomRefusals, StateAggregationAndSpontaneousTransition) {
+TEST(SdlAtomRefusals, LeavingAStateAggregationAndSpontaneousTransition) {
   const Translated t = translate_process(spec(), R"(process F;
   state aggregation Both;
   substructure
@@ -68,20 +68,30 @@ TEST(SdlAtomRefusals, StateAggregationAndSpontaneousTransition) {
       start;
         nextstate S;
       state S;
+        input go(n);
+          return;
       endstate;
     endsubstructure;
   endsubstructure;
+  dcl n T_Int;
   start;
     nextstate Idle;
   state Idle;
     input none;
       nextstate Both;
   endstate;
+  state Both;
+    input go(n);
+      nextstate Idle;
+  endstate;
 endprocess F;)");
   EXPECT_FALSE(t.atom);
   EXPECT_EQ(t.errors,
-            "test.pr:2:3: error: state aggregation 'Both' (parallel substates) is not translated\n"
-            "test.pr:15:11: error: a spontaneous transition (input none) is not translated\n");
+            "test.pr:18:11: error: a spontaneous transition (input none) is not translated\n"
+            "test.pr:21:3: error: transitions of a state enclosing a state aggregation are not "
+            "translated\n"
+            "test.pr:10:11: error: leaving a state aggregation or one of its regions is not "
+            "translated\n");
 }
 
 }  // namespace

@@ -64,6 +64,7 @@ struct Chain {
   std::string origin;  // the stable state's place; empty for the start transition
   std::string key;     // distinguishes the places of labels per chain context
   const SignalInterface* serving = nullptr;
+  std::string busy;  // the aggregation's busy data, for a chain that starts in one of its regions
   std::vector<std::pair<Ref, Ref>> out_copies;  // interface data <- variable, at the return
 };
 
@@ -85,6 +86,8 @@ struct Level {
   std::map<std::string, const sdl::CompositeState*> composites;
   const sdl::Procedure* entry = nullptr;  // the substructure's `entry` and `exit` procedures
   const sdl::Procedure* exit = nullptr;
+  /// A state aggregation's data that is true while one of its regions runs a transition.
+  std::string busy;
 };
 
 /// A state the process rests in: a place and the level that declares it.
@@ -215,6 +218,16 @@ class Translator {
   void declare_level(Level& level);
   std::string entry_place(const sdl::CompositeState& c, const std::string& entry);
   void translate_entries();
+  void enter_regions(const PendingEntry& e);
+  const sdl::CompositeState* owner_region(const Level& aggregation, const std::string& key) const;
+  bool has_input(const sdl::Body& body, const std::string& key) const;
+  /// The region of a state aggregation that `state` lies in, with the aggregation's level.
+  std::pair<const sdl::CompositeState*, const Level*> region_of(const StableState& state) const;
+  /// `step` made the start of a chain of a region of `aggregation` (none: unchanged).
+  void start_in_region(const Level* aggregation, Step& step, Chain& chain) const;
+  void refuse_outer_transitions(
+      const StableState& state, const Level& aggregation,
+      const std::vector<std::pair<const sdl::State*, const Level*>>& blocks);
   bool exit_composite(const sdl::Action& a, Step& step, Chain& chain, Outcome& out);
   bool inline_hook(const sdl::Procedure* p, Step& step, Chain& chain, const bipc::Location& at);
   std::vector<std::pair<const sdl::State*, const Level*>> blocks_of(const StableState& s) const;
@@ -250,13 +263,15 @@ class Translator {
   std::map<const sdl::Procedure*, Ref> procedure_results_;
   std::vector<std::unique_ptr<Level>> levels_;
   std::map<const sdl::CompositeState*, Level*> composite_levels_;
-  std::vector<StableState> stable_;  // in order of appearance
-  const Level* level_ = nullptr;     // the level whose transition is being translated
+  std::vector<StableState> stable_;     // in order of appearance
+  const Level* level_ = nullptr;        // the level whose transition is being translated
+  const Level* aggregation_ = nullptr;  // the state aggregation of the state being translated
   std::map<std::pair<const sdl::CompositeState*, std::string>, std::string> entry_places_;
   std::vector<PendingEntry> pending_entries_;
   std::map<std::string, Ref> context_;          // context parameters by folded name
   std::set<const sdl::InputSignal*> reported_;  // unknown inputs, reported once
-  std::map<std::string, std::string> timers_;   // folded name -> BIP base name
+  std::set<const sdl::State*> refused_blocks_;
+  std::map<std::string, std::string> timers_;  // folded name -> BIP base name
   std::map<std::string, std::string> label_places_;
   std::size_t inline_count_ = 0;
   std::string stop_place_;
@@ -265,7 +280,11 @@ class Translator {
   std::set<std::string> used_;
   std::string data_text_, ports_text_, transitions_text_;
   std::vector<std::string> places_;
-  std::vector<std::string> branch_ports_;
+  /// The internal ports by family: the atom's, and one family per region of a state
+  /// aggregation, since two regions' steps may be enabled together and an atom must not offer
+  /// one port twice at once.
+  std::map<std::string, std::vector<std::string>> branch_ports_;
+  std::vector<std::string> port_order_;
   std::size_t place_count_ = 0;
   std::vector<std::string> notes_, extern_types_, extern_functions_;
   void need_function(const std::string& prototype);
