@@ -14,8 +14,14 @@
 //    interface), then `p_return` into the next state. A call the state does not handle is
 //    consumed (`p_in` then `p_return`); a saved one waits in the caller's FIFO;
 //  - per timer t: `clock t_clock`, `t_armed`, `t_value` and the internal port `t_expired`, which
-//    fires in a state once armed and `t_clock >= t_value`.
-// The package must declare the port type `Port` (no parameters) for the internal ports.
+//    fires in a state once armed and `t_clock >= t_value`;
+//  - a composite state is entered at a place named after it (`<Composite>_via_<entry>` for an
+//    entry point) from which its start runs, after the return of the call that entered it; a
+//    state aggregation marks one place per region, each region with its own internal ports
+//    and a `<Aggregation>_busy` flag that lets one region's transition run at a time.
+// Procedures are inlined at each call; `for` loops over constant ranges are unrolled, others
+// become loops of places. The package must declare the port type `Port` (no parameters) for
+// the internal ports, and the atom's `extern_functions`.
 #pragma once
 
 #include <optional>
