@@ -2,6 +2,7 @@
 // timers, variables, inlined procedures' data) and the assembly of its text.
 #include "taste2bip/translate/sdl_atom.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "taste2bip/names.h"
@@ -11,6 +12,8 @@ namespace smcbip::taste2bip {
 
 namespace detail {
 
+std::string signal_key(const std::string& name) { return bip_identifier(folded(name)); }
+
 std::string folded(const std::string& name) {
   std::string out;
   for (char c : name) {
@@ -19,19 +22,28 @@ std::string folded(const std::string& name) {
   return out;
 }
 
-bool Outcome::merge(Outcome other) {
+void Outcome::merge(Outcome other) {
   for (Step& s : other.falls) falls.push_back(std::move(s));
   for (Step& s : other.returns) returns.push_back(std::move(s));
-  return true;
 }
 
 Translator::Translator(const FunctionSignature& function, const sdl::Process& process,
                        const std::vector<const sdl::Procedure*>& procedures,
                        const asn1::DataView& data, bipc::Diagnostics& diags)
     : function_(function), process_(process), data_(data), diags_(diags) {
-  for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)] = p;
-  for (const sdl::Procedure& p : process.body.procedures) procedures_[folded(p.name)] = &p;
+  for (const sdl::Procedure* p : procedures) procedures_[folded(p->name)].push_back(p);
+  for (const sdl::Procedure& p : process.body.procedures) {
+    procedures_[folded(p.name)].push_back(&p);
+  }
   errors_before_ = diags.error_count();
+}
+
+void Translator::need_function(const std::string& prototype) {
+  const std::string line = "extern function " + prototype;
+  if (std::find(extern_functions_.begin(), extern_functions_.end(), line) ==
+      extern_functions_.end()) {
+    extern_functions_.push_back(line);
+  }
 }
 
 void Translator::error(const bipc::Location& at, const std::string& message) {
@@ -50,9 +62,9 @@ void Translator::declare_timers() {
   for (const sdl::Timer& t : process_.body.timers) names.push_back(t.name);
   for (const std::string& t : function_.context_timers) names.push_back(t);
   for (const std::string& t : names) {
-    if (timers_.count(folded(t)) > 0) continue;
+    if (timers_.count(signal_key(t)) > 0) continue;
     const std::string base = bip_identifier(t);
-    timers_[folded(t)] = base;
+    timers_[signal_key(t)] = base;
     for (const char* suffix : {"_clock", "_armed", "_value", "_expired"}) reserve(base + suffix);
     data_text_ += "    clock " + base + "_clock unit millisecond\n    data bool " + base +
                   "_armed = false\n    data int " + base + "_value = 0\n";
@@ -63,6 +75,10 @@ void Translator::declare_timers() {
 void Translator::declare_variables() {
   scopes_.emplace_back();
   for (const sdl::Variable& v : process_.body.variables) {
+    if (scopes_.back().count(folded(v.name)) > 0) {
+      error(v.at, "variable '" + v.name + "' is declared twice (SDL names ignore case)");
+      continue;
+    }
     std::optional<Ref> ref = declare_sdl_variable(v, "");
     if (!ref) continue;
     scopes_.back()[folded(v.name)] = Binding{*ref, 0};
@@ -70,14 +86,31 @@ void Translator::declare_variables() {
   }
 }
 
-void Translator::declare_procedure(const sdl::Procedure& p) {
+void Translator::declare_context() {
+  for (const ContextValue& c : function_.context) {
+    Ref ref{fresh("ctxt_" + c.name), c.leaves, nullptr};
+    if (const auto id = find_type_spelled(data_, c.asn1_type)) {
+      ref.type = definition(data_, data_.type(*id)->type);
+    }
+    declare_variable(ref.data, ref.leaves);
+    context_[folded(c.name)] = ref;
+    const std::string v = folded(c.value);
+    const bool number = !v.empty() && v.find_first_not_of("+-.0123456789e") == std::string::npos;
+    if (ref.leaves.size() == 1 && ref.leaves[0].suffix.empty() &&
+        (number || v == "true" || v == "false")) {
+      initial_statements_.push_back(ref.data + " = " + v + ";");
+    } else if (!c.value.empty()) {
+      notes_.push_back("context parameter " + c.name + " = " + c.value +
+                       ": not set (only single numbers and booleans are)");
+    }
+  }
+}
+
+void Translator::declare_procedure(const sdl::Procedure& p, const std::string& level_prefix) {
   if (p.is_external || p.is_referenced) return;
-  const std::string prefix = bip_identifier(p.name) + "_";
+  const std::string prefix = level_prefix + bip_identifier(p.name) + "_";
   auto& scope = procedure_scopes_[&p];
   for (const sdl::FormalParameter& f : p.parameters) {
-    if (f.direction == sdl::FormalParameter::Direction::Out) {
-      error(f.at, "out parameter '" + f.name + "' is not translated (in and in/out are)");
-    }
     std::optional<Ref> ref = declare_sdl_variable(sdl::Variable{f.name, f.type, {}, f.at}, prefix);
     if (!ref) continue;
     scope[folded(f.name)] = Binding{*ref, 0};
@@ -87,10 +120,12 @@ void Translator::declare_procedure(const sdl::Procedure& p) {
     std::optional<Ref> ref = declare_sdl_variable(v, prefix);
     if (ref) scope[folded(v.name)] = Binding{*ref, 0};
   }
-  if (!p.return_type.empty() && !p.return_name.empty()) {
-    sdl::Variable result{p.return_name, p.return_type, {}, p.at};
-    std::optional<Ref> ref = declare_sdl_variable(result, prefix);
-    if (ref) scope[folded(p.return_name)] = Binding{*ref, 0};
+  if (!p.return_type.empty()) {
+    const std::string name = p.return_name.empty() ? "result" : p.return_name;
+    std::optional<Ref> ref =
+        declare_sdl_variable(sdl::Variable{name, p.return_type, {}, p.at}, prefix);
+    if (ref && !p.return_name.empty()) scope[folded(p.return_name)] = Binding{*ref, 0};
+    if (ref) procedure_results_[&p] = *ref;
   }
   if (!p.body.procedures.empty() || !p.body.composite_states.empty() || !p.body.states.empty() ||
       !p.body.timers.empty()) {
@@ -108,9 +143,6 @@ std::optional<AtomType> Translator::run() {
       for (const char* port : {"_in", "_return", "_out", "_result"}) reserve(i.name + port);
     }
   }
-  for (const sdl::CompositeState& c : process_.body.composite_states) {
-    error(c.at, "nested state '" + c.name + "' is not translated");
-  }
   if (faults_only_) {
     for (const SignalInterface& p : function_.provided) {
       if (!is_fault_interface(p)) continue;
@@ -121,27 +153,21 @@ std::optional<AtomType> Translator::run() {
   declare_timers();
   declare_context();
   declare_variables();
-  for (const auto& [name, p] : procedures_) declare_procedure(*p);
-  collect_states();
-  ready_place_ = fresh("ready");  // after the states, which keep their SDL names
+  for (const auto& [name, list] : procedures_) {
+    for (const sdl::Procedure* p : list) declare_procedure(*p);
+  }
+  build_level(process_.body, "", nullptr, nullptr);
+  if (composite_levels_.empty()) {
+    ready_place_ = fresh("ready");  // after the states, which keep their SDL names
+  } else {
+    notes_.push_back("nested states: while a transition runs, the atom is in an intermediate "
+                     "place, which properties see");
+  }
   label_tables_.emplace_back();
-  for (const sdl::FloatingLabel& l : process_.body.labels) {
-    label_tables_.back()[folded(l.name)] = LabelSite{&l.transition.actions, 0, true};
-    collect_labels(l.transition.actions, true, label_tables_.back());
-  }
-  for (const sdl::Start& s : process_.body.starts) {
-    collect_labels(s.transition.actions, true, label_tables_.back());
-  }
-  for (const sdl::State& s : process_.body.states) {
-    for (const sdl::Input& i : s.inputs) {
-      collect_labels(i.transition.actions, true, label_tables_.back());
-    }
-    for (const sdl::ContinuousSignal& c : s.continuous) {
-      collect_labels(c.transition.actions, true, label_tables_.back());
-    }
-  }
+  for (const auto& level : levels_) collect_body_labels(*level->body, label_tables_.back());
   translate_start();
-  for (const std::string& state : std::vector<std::string>(state_order_)) translate_state(state);
+  for (const StableState& state : std::vector<StableState>(stable_)) translate_state(state);
+  translate_entries();
   if (diags_.error_count() > errors_before_) return std::nullopt;
   AtomType atom;
   atom.name = faults_only_ ? function_.name + "_faulty" : function_.name;
@@ -157,10 +183,10 @@ std::string Translator::text() const {
       "  atom type " + (faults_only_ ? function_.name + "_faulty" : function_.name) + "()\n";
   out += interface_declarations(function_);
   out += data_text_ + ports_text_;
-  for (const std::string& port : branch_ports_) out += "    port Port " + port + "()\n";
+  for (const std::string& port : port_order_) out += "    port Port " + port + "()\n";
   std::string places;
   for (const std::string& p : places_) places += (places.empty() ? "" : ", ") + p;
-  places += (places.empty() ? "" : ", ") + ready_place_;
+  if (!ready_place_.empty()) places += (places.empty() ? "" : ", ") + ready_place_;
   if (!places.empty()) out += "    place " + places + "\n";
   out += transitions_text_;
   return out + "  end\n";

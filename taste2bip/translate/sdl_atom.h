@@ -1,6 +1,27 @@
 // An SDL process (OpenGEODE's SDL-PR) as a BIP atom type with the ports of signature.h. SDL
 // states are places; a transition runs to completion through intermediate places left by
 // internal or eager steps only, so between two interface calls the atom rests in an SDL state.
+//
+// What the atom contains, besides the contract's data and ports:
+//  - one data per leaf of each variable (bip_types.h), procedure locals and parameters
+//    prefixed `<procedure>_`, a composite state's variables `<Composite>_`;
+//  - places: each state under its own name (substates of composite states as
+//    `<Composite>_<Sub>`), intermediate places `<State>__<n>` (`START__<n>` in the start
+//    transition), never a data's name;
+//  - every step eager: a provided interface's call `p_in` from a state, the chain's internal
+//    steps (ports `silent`, `silent_1`... of type `Port`, one per answer of a decision so that
+//    answers never share a port), outputs `r_out` (and `r_result` for a synchronous required
+//    interface), then `p_return` into the next state. A call the state does not handle is
+//    consumed (`p_in` then `p_return`); a saved one waits in the caller's FIFO;
+//  - per timer t: `clock t_clock`, `t_armed`, `t_value` and the internal port `t_expired`, which
+//    fires in a state once armed and `t_clock >= t_value`;
+//  - a composite state is entered at a place named after it (`<Composite>_via_<entry>` for an
+//    entry point) from which its start runs, after the return of the call that entered it; a
+//    state aggregation marks one place per region, each region with its own internal ports
+//    and a `<Aggregation>_busy` flag that lets one region's transition run at a time.
+// Procedures are inlined at each call; `for` loops over constant ranges are unrolled, others
+// become loops of places. The package must declare the port type `Port` (no parameters) for
+// the internal ports, and the atom's `extern_functions`.
 #pragma once
 
 #include <optional>
@@ -19,8 +40,8 @@ struct AtomType {
   std::string text;  // `atom type NAME() ... end`, indented as a package member
   /// Package-level declarations the atom needs (extern data types), each once.
   std::vector<std::string> extern_types;
-  /// Package-level extern function declarations it calls (`extern function printf(string,
-  /// int)`), each once.
+  /// Package-level prototypes of the builtin functions the atom calls (`printf` for writeln,
+  /// `abs`, `max`), each once: `extern function printf(string, int)`.
   std::vector<std::string> extern_functions;
   /// What the translation assumed or left out, one line each, for the report.
   std::vector<std::string> notes;

@@ -5,13 +5,6 @@
 
 namespace smcbip::taste2bip::detail {
 
-namespace {
-
-/// The largest number of iterations of a `for` loop unrolled.
-constexpr std::size_t kMaxIterations = 64;
-
-}  // namespace
-
 Outcome Translator::actions(const std::vector<sdl::Action>& list, std::size_t from, Step step,
                             Chain& chain) {
   Outcome out;
@@ -63,52 +56,66 @@ bool Translator::action(const sdl::Action& a, Step& step, Chain& chain, Outcome&
       ended = true;
       out.merge(label(a.name, a.at, std::move(step), chain, false, nullptr, 0));
       return true;
-    case K::NextState: {
-      ended = true;
-      if (!a.via.empty()) {
-        error(a.at, "nextstate via an entry point (a nested state) is not translated");
-        return false;
-      }
-      if (a.name == "-" && chain.origin.empty()) {
-        error(a.at, "'nextstate -' in the start transition has no state to go back to");
-        return false;
-      }
-      std::optional<std::string> target =
-          a.name == "-" ? std::optional<std::string>(chain.origin) : state_place(a.name, a.at);
-      if (target) terminate(std::move(step), *target, chain);
-      return target.has_value();
-    }
+    case K::NextState:
     case K::Stop:
       ended = true;
-      if (stop_place_.empty()) {
-        stop_place_ = fresh("STOPPED");
-        places_.push_back(stop_place_);
-        notes_.push_back("'stop' leads to the place " + stop_place_ + ", which has no way out");
-      }
-      terminate(std::move(step), stop_place_, chain);
-      return true;
+      return next_state(a, std::move(step), chain);
     case K::Return:
       ended = true;
-      if (inlining_.empty()) {
-        error(a.at, "return outside a procedure (from a nested state) is not translated");
-        return false;
-      }
-      if (a.value) {
-        error(a.value->at, "a procedure returning a value is not translated");
-        return false;
-      }
-      out.returns.push_back(std::move(step));
-      return true;
+      return return_action(a, step, chain, out);
     default:
       error(a.at, "this action is not translated");
       return false;
   }
 }
 
+bool Translator::next_state(const sdl::Action& a, Step step, Chain& chain) {
+  if (a.kind == sdl::Action::Kind::Stop) {
+    if (stop_place_.empty()) {
+      stop_place_ = fresh("STOPPED");
+      places_.push_back(stop_place_);
+      notes_.push_back("'stop' leads to the place " + stop_place_ + ", which has no way out");
+    }
+    terminate(std::move(step), stop_place_, chain);
+    return true;
+  }
+  if (a.name == "-" && chain.origin.empty()) {
+    error(a.at, "'nextstate -' in the start transition has no state to go back to");
+    return false;
+  }
+  std::optional<std::string> target =
+      a.name == "-" ? std::optional<std::string>(chain.origin) : state_place(a.name, a.via, a.at);
+  if (target) terminate(std::move(step), *target, chain);
+  return target.has_value();
+}
+
+bool Translator::return_action(const sdl::Action& a, Step& step, Chain& chain, Outcome& out) {
+  if (inlining_.empty() && level_ != nullptr && level_->composite != nullptr) {
+    return exit_composite(a, step, chain, out);
+  }
+  if (inlining_.empty()) {
+    error(a.at, "return outside a procedure or a nested state");
+    return false;
+  }
+  if (a.value) {
+    auto result = procedure_results_.find(inlining_.back());
+    if (result == procedure_results_.end()) {
+      error(a.value->at, "a value returned by a procedure that declares no result type");
+      return false;
+    }
+    if (!assign(result->second, *a.value, step.statements)) return false;
+  }
+  out.returns.push_back(std::move(step));
+  return true;
+}
+
 bool Translator::task(const sdl::TaskElement& t, Step& step, Chain& chain, Outcome& out,
                       bool& ended) {
   switch (t.kind) {
     case sdl::TaskElement::Kind::Assignment:
+      if (t.value.kind == sdl::Expr::Kind::ProcedureCall) {
+        return call_for_value(t.target, t.value, step, chain, out, ended);
+      }
       return assign_statement(t.target, t.value, step.statements);
     case sdl::TaskElement::Kind::Informal:
       notes_.push_back("informal task '" + t.text + "' is not executed");
@@ -117,73 +124,6 @@ bool Translator::task(const sdl::TaskElement& t, Step& step, Chain& chain, Outco
       return for_loop(t.loop.at(0), step, chain, out, ended);
   }
   return false;
-}
-
-bool Translator::for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Outcome& out,
-                          bool& ended) {
-  std::vector<Binding> values;
-  const sdl::Expr& it = loop.iterable;
-  const bool range = it.kind == sdl::Expr::Kind::Call && !it.operands.empty() &&
-                     it.operands[0].kind == sdl::Expr::Kind::Name &&
-                     folded(it.operands[0].text) == "range";
-  if (range) {
-    std::vector<std::int64_t> bounds;
-    for (std::size_t k = 1; k < it.operands.size(); ++k) {
-      std::optional<std::int64_t> c = constant(it.operands[k]);
-      if (!c) {
-        error(it.operands[k].at, "a loop bound that is not a constant is not translated");
-        return false;
-      }
-      bounds.push_back(*c);
-    }
-    const std::int64_t low = bounds.size() >= 2 ? bounds[0] : 0;
-    const std::int64_t high = bounds.size() >= 2 ? bounds[1] : (bounds.empty() ? 0 : bounds[0]);
-    const std::int64_t by = bounds.size() >= 3 ? bounds[2] : 1;
-    if (by == 0 || bounds.empty() || bounds.size() > 3) {
-      error(it.at, "this range is not translated");
-      return false;
-    }
-    for (std::int64_t v = low; (by > 0 ? v < high : v > high); v += by) {
-      if (values.size() >= kMaxIterations) break;
-      values.push_back(Binding{std::nullopt, v});
-    }
-    if (values.size() >= kMaxIterations &&
-        low + by * static_cast<std::int64_t>(kMaxIterations) < high) {
-      error(it.at, "a loop of more than 64 iterations is not unrolled");
-      return false;
-    }
-  } else {
-    std::optional<Ref> seq = reference(it);
-    if (!seq) return false;
-    for (const Leaf& l : seq->leaves) {
-      if (l.asn1_type == nullptr && l.suffix == "length") {
-        error(it.at, "a loop over a SEQUENCE OF of variable size is not translated");
-        return false;
-      }
-    }
-    for (std::int64_t k = 0; seq->type && seq->type->kind == asn1::TypeKind::SequenceOf; ++k) {
-      bool found = false;
-      for (const Leaf& l : seq->leaves)
-        found = found || (!l.path.empty() && l.path[0] == std::to_string(k));
-      if (!found) break;
-      std::optional<Ref> e = element(*seq, k, it.at);
-      if (!e) return false;
-      values.push_back(Binding{*e, 0});
-    }
-  }
-  for (const Binding& value : values) {
-    scopes_.push_back({{folded(loop.variable), value}});
-    Outcome o = actions(loop.body.actions, 0, std::move(step), chain);
-    scopes_.pop_back();
-    for (Step& r : o.returns) out.returns.push_back(std::move(r));
-    std::optional<Step> next = join_falls(std::move(o.falls), chain);
-    if (!next) {
-      ended = true;
-      return true;
-    }
-    step = std::move(*next);
-  }
-  return true;
 }
 
 void Translator::terminate(Step step, const std::string& target, Chain& chain) {
@@ -195,14 +135,18 @@ void Translator::terminate(Step step, const std::string& target, Chain& chain) {
     close(std::move(step), before);
     step = Step{false, chain.serving->name + "_return", before, "", {}};
   }
+  if (!chain.busy.empty()) step.statements.push_back(chain.busy + " = false;");
   close(std::move(step), target);
 }
 
-std::optional<std::string> Translator::state_place(const std::string& name,
+std::optional<std::string> Translator::state_place(const std::string& name, const std::string& via,
                                                    const bipc::Location& at) {
-  auto it = states_.find(folded(name));
-  if (it != states_.end()) return it->second;
-  error(at, "'" + name + "' is not a state of the process");
+  if (auto it = level_->composites.find(folded(name)); it != level_->composites.end()) {
+    return entry_place(*it->second, via);
+  }
+  auto it = level_->states.find(folded(name));
+  if (it != level_->states.end() && via.empty()) return it->second;
+  error(at, "'" + name + "' is not a " + (via.empty() ? "state" : "nested state") + " here");
   return std::nullopt;
 }
 

@@ -34,12 +34,13 @@ std::size_t element_count(const Ref& r) {
 }  // namespace
 
 bool Translator::assign(const Ref& target, const sdl::Expr& value, std::vector<std::string>& out) {
+  if (value.kind == sdl::Expr::Kind::Conditional) return assign_conditional(target, value, out);
   if (is_scalar(target)) {
     std::optional<Scalar> s = scalar(value, target.leaves[0].asn1_type);
     if (!s) return false;
     if (!s->kind.empty() && !assignable(target.leaves[0].type, s->kind)) {
-      error(value.at, "a value of type " + s->kind + " assigned to '" + target.data +
-                          "', of type " + target.leaves[0].type);
+      error(value.at, "a value of BIP type " + s->kind + " assigned to '" + target.data +
+                          "' of BIP type " + target.leaves[0].type);
       return false;
     }
     out.push_back(target.data + " = " + s->text + ";");
@@ -49,6 +50,22 @@ bool Translator::assign(const Ref& target, const sdl::Expr& value, std::vector<s
   if (value.kind == sdl::Expr::Kind::Choice) return assign_choice(target, value, out);
   std::optional<Ref> source = reference(value);
   return source && assign_ref(target, *source, value.at, out);
+}
+
+bool Translator::assign_conditional(const Ref& target, const sdl::Expr& value,
+                                    std::vector<std::string>& out) {
+  std::optional<Scalar> condition = scalar(value.operands[0]);
+  std::vector<std::string> then, otherwise;
+  if (!condition || !assign(target, value.operands[1], then) ||
+      !assign(target, value.operands[2], otherwise)) {
+    return false;
+  }
+  std::string text = "if (" + condition->text + ") then";
+  for (const std::string& s : then) text += " " + s;
+  text += " else";
+  for (const std::string& s : otherwise) text += " " + s;
+  out.push_back(text + " fi");
+  return true;
 }
 
 bool Translator::assign_ref(const Ref& target, const Ref& source, const bipc::Location& at,
@@ -128,6 +145,54 @@ bool Translator::assign_choice(const Ref& target, const sdl::Expr& value,
   }
   error(value.at, "'" + value.text + "' is not an alternative of '" + target.data + "'");
   return false;
+}
+
+std::optional<std::string> Translator::literal_equals(const Ref& r, const sdl::Expr& literal) {
+  const asn1::TypeKind kind = r.type ? r.type->kind : asn1::TypeKind::Integer;
+  std::vector<std::string> parts;
+  if (literal.kind == sdl::Expr::Kind::Choice && kind == asn1::TypeKind::Choice) {
+    const Leaf* present = bookkeeping(r, "present");
+    for (std::size_t k = 0; present && k < r.type->components.size(); ++k) {
+      if (folded(r.type->components[k].name) != folded(literal.text)) continue;
+      parts.push_back(leaf_name(r.data, *present) + " == " + std::to_string(k + 1));
+      std::optional<Ref> f = field(r, literal.text, literal.at);
+      std::optional<std::string> inner = f ? literal_equals(*f, literal.operands[0]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (literal.kind == sdl::Expr::Kind::Sequence && kind == asn1::TypeKind::SequenceOf) {
+    if (const Leaf* length = bookkeeping(r, "length")) {
+      parts.push_back(leaf_name(r.data, *length) +
+                      " == " + std::to_string(literal.operands.size()));
+    }
+    for (std::size_t k = 0; k < literal.operands.size(); ++k) {
+      std::optional<Ref> e = element(r, static_cast<std::int64_t>(k), literal.operands[k].at);
+      std::optional<std::string> inner = e ? literal_equals(*e, literal.operands[k]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (literal.kind == sdl::Expr::Kind::Sequence && kind == asn1::TypeKind::Sequence) {
+    for (std::size_t k = 0; k < literal.operands.size() && k < literal.field_names.size(); ++k) {
+      std::optional<Ref> f = field(r, literal.field_names[k], literal.operands[k].at);
+      std::optional<std::string> inner = f ? literal_equals(*f, literal.operands[k]) : std::nullopt;
+      if (!inner) return std::nullopt;
+      parts.push_back(*inner);
+    }
+  } else if (is_scalar(r)) {
+    std::optional<Scalar> s = scalar(literal, r.leaves[0].asn1_type);
+    if (!s) return std::nullopt;
+    parts.push_back(r.data + " == " + s->text);
+  } else {
+    error(literal.at, "this value cannot be compared with '" + r.data + "'");
+    return std::nullopt;
+  }
+  if (parts.empty()) {
+    error(literal.at, "this value does not match the type of '" + r.data + "'");
+    return std::nullopt;
+  }
+  std::string text;
+  for (const std::string& p : parts) text += (text.empty() ? "" : " && ") + p;
+  return "(" + text + ")";
 }
 
 bool Translator::assign_statement(const sdl::Expr& target, const sdl::Expr& value,

@@ -19,6 +19,32 @@ std::string leaf_data(const Ref& ref, const std::string& suffix) {
 
 }  // namespace
 
+std::optional<Scalar> Translator::bookkeeping_value(const std::string& f, const sdl::Expr& e) {
+  const sdl::Expr& arg = e.operands[1];
+  if (f == "exist") {
+    std::optional<Ref> r =
+        arg.kind == sdl::Expr::Kind::Field ? reference(arg.operands[0]) : std::nullopt;
+    const std::string suffix = bip_identifier(arg.text) + "_exist";
+    for (const Leaf& l : r ? r->leaves : std::vector<Leaf>{}) {
+      if (folded(l.suffix) == folded(suffix)) return Scalar{leaf_name(r->data, l), "bool"};
+    }
+    error(e.at, "exist of something that is not an optional field");
+    return std::nullopt;
+  }
+  std::optional<Ref> r = reference(arg);
+  if (!r) return std::nullopt;
+  if (std::string d = leaf_data(*r, f); !d.empty()) return Scalar{d, "int"};
+  if (f == "length" && r->type != nullptr && r->type->kind == asn1::TypeKind::SequenceOf) {
+    std::set<std::string> elements;
+    for (const Leaf& l : r->leaves) {
+      if (!l.path.empty()) elements.insert(l.path[0]);
+    }
+    return Scalar{std::to_string(elements.size()), "int"};
+  }
+  error(e.at, "'" + f + "' of a value that has no " + f + " in its data is not translated");
+  return std::nullopt;
+}
+
 std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Type* hint) {
   const sdl::Expr& callee = e.operands[0];
   const std::size_t args = e.operands.size() - 1;
@@ -28,7 +54,11 @@ std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Typ
     if (!x) return std::nullopt;
     if (f == "num") return x;
     if (f == "float") return Scalar{"(" + x->text + " * 1.0)", "float"};
-    if (x->kind == "float") return Scalar{"max(" + x->text + ", -(" + x->text + "))", "float"};
+    if (x->kind == "float") {
+      need_function("float max(float, float)");
+      return Scalar{"max(" + x->text + ", -(" + x->text + "))", "float"};
+    }
+    need_function("int abs(int)");
     return Scalar{"abs(" + x->text + ")", "int"};
   }
   if (f == "power" && args == 2) {
@@ -45,29 +75,8 @@ std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Typ
     for (std::int64_t k = 0; k < *n; ++k) text += " * " + x->text;
     return Scalar{"(" + text + ")", x->kind};
   }
-  if ((f == "length" || f == "present") && args == 1) {
-    std::optional<Ref> r = reference(e.operands[1]);
-    if (!r) return std::nullopt;
-    if (std::string d = leaf_data(*r, f); !d.empty()) return Scalar{d, "int"};
-    if (f == "length" && r->type != nullptr && r->type->kind == asn1::TypeKind::SequenceOf) {
-      std::set<std::string> elements;
-      for (const Leaf& l : r->leaves) {
-        if (!l.path.empty()) elements.insert(l.path[0]);
-      }
-      return Scalar{std::to_string(elements.size()), "int"};
-    }
-    error(e.at, "'" + f + "' of a value that has no " + f + " in its data is not translated");
-    return std::nullopt;
-  }
-  if (f == "exist" && args == 1 && e.operands[1].kind == sdl::Expr::Kind::Field) {
-    std::optional<Ref> r = reference(e.operands[1].operands[0]);
-    if (!r) return std::nullopt;
-    const std::string suffix = bip_identifier(e.operands[1].text) + "_exist";
-    for (const Leaf& l : r->leaves) {
-      if (folded(l.suffix) == folded(suffix)) return Scalar{leaf_name(r->data, l), "bool"};
-    }
-    error(e.at, "'" + e.operands[1].text + "' is not an optional field");
-    return std::nullopt;
+  if ((f == "length" || f == "present" || f == "exist") && args == 1) {
+    return bookkeeping_value(f, e);
   }
   if (!f.empty() && procedures_.count(f) > 0) {
     error(e.at, "a call of procedure '" + callee.text + "' inside an expression is not translated");

@@ -60,7 +60,15 @@ bool Translator::interface_call(const SignalInterface& r, const std::vector<sdl:
   std::string next = place(chain);
   close(std::move(step), next);
   step = Step{false, r.name + "_out", next, "", {}};
-  if (!r.synchronous()) return true;
+  if (!r.synchronous()) {
+    const bool outs = std::any_of(r.parameters.begin(), r.parameters.end(),
+                                  [](const SignalParameter& p) { return p.out; });
+    if (outs) {
+      notes_.push_back("'" + r.name + "' reaches no synchronous interface: the call does not " +
+                       "wait, its out parameters keep their values");
+    }
+    return true;
+  }
   next = place(chain);
   close(std::move(step), next);
   step = Step{false, r.name + "_result", next, "", {}};
@@ -78,13 +86,15 @@ bool Translator::interface_call(const SignalInterface& r, const std::vector<sdl:
 bool Translator::call(const sdl::Action& a, Step& step, Chain& chain, Outcome& out, bool& ended) {
   const std::string f = folded(a.name);
   if (f == "set_timer" || f == "reset_timer") return timer_call(a, f == "set_timer", step);
+  if ((f == "set" && a.arguments.size() == 2) || (f == "reset" && a.arguments.size() == 1)) {
+    return sdl_timer_call(a, step);
+  }
   if (f == "writeln" || f == "write") return write_call(a, f == "writeln", step);
   if (const SignalInterface* r = find_interface(function_.required, a.name)) {
     return interface_call(*r, a.arguments, a.at, step, chain);
   }
-  auto p = procedures_.find(f);
-  if (p != procedures_.end() && !p->second->is_external && !p->second->is_referenced) {
-    return procedure_call(*p->second, a, step, chain, out, ended);
+  if (const sdl::Procedure* p = choose_procedure(a.name, a.arguments.size())) {
+    return procedure_call(*p, a, step, chain, out, ended);
   }
   error(a.at, "call of '" + a.name +
                   "' is not translated (no procedure with a body nor required interface of that "
@@ -92,10 +102,43 @@ bool Translator::call(const sdl::Action& a, Step& step, Chain& chain, Outcome& o
   return false;
 }
 
+const sdl::Procedure* Translator::choose_procedure(const std::string& name, std::size_t arguments) {
+  const sdl::Procedure* chosen = nullptr;
+  if (auto p = procedures_.find(folded(name)); p != procedures_.end()) {
+    for (const sdl::Procedure* candidate : p->second) {
+      if (!candidate->is_external && !candidate->is_referenced &&
+          candidate->parameters.size() == arguments) {
+        chosen = candidate;
+      }
+    }
+  }
+  return chosen;
+}
+
+bool Translator::call_for_value(const sdl::Expr& target, const sdl::Expr& call, Step& step,
+                                Chain& chain, Outcome& out, bool& ended) {
+  const sdl::Expr& callee = call.operands[0];
+  const sdl::Procedure* p = callee.kind == sdl::Expr::Kind::Name
+                                ? choose_procedure(callee.text, call.operands.size() - 1)
+                                : nullptr;
+  if (p == nullptr || procedure_results_.count(p) == 0) {
+    error(call.at, "this call names no procedure with a body that returns a value");
+    return false;
+  }
+  sdl::Action a;
+  a.kind = sdl::Action::Kind::Call;
+  a.name = callee.text;
+  a.arguments.assign(call.operands.begin() + 1, call.operands.end());
+  a.at = call.at;
+  if (!procedure_call(*p, a, step, chain, out, ended) || ended) return false;
+  std::optional<Ref> t = reference(target);
+  return t && assign_ref(*t, procedure_results_.at(p), call.at, step.statements);
+}
+
 bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
   const std::size_t expected = set ? 2 : 1;
   const sdl::Expr* timer = a.arguments.size() == expected ? &a.arguments.back() : nullptr;
-  auto it = timer && timer->kind == sdl::Expr::Kind::Name ? timers_.find(folded(timer->text))
+  auto it = timer && timer->kind == sdl::Expr::Kind::Name ? timers_.find(signal_key(timer->text))
                                                           : timers_.end();
   if (it == timers_.end()) {
     error(a.at, std::string(set ? "set_timer(duration, timer)" : "reset_timer(timer)") +
@@ -115,8 +158,24 @@ bool Translator::timer_call(const sdl::Action& a, bool set, Step& step) {
   return true;
 }
 
+bool Translator::sdl_timer_call(const sdl::Action& a, Step& step) {
+  if (a.arguments.size() == 1) return timer_call(a, false, step);
+  // SDL's `set(now + d, t)`: the timer expires d after now.
+  const sdl::Expr& when = a.arguments[0];
+  const bool relative = when.kind == sdl::Expr::Kind::Binary && when.op == sdl::Operator::Plus &&
+                        when.operands[0].kind == sdl::Expr::Kind::Name &&
+                        folded(when.operands[0].text) == "now";
+  if (!relative) {
+    error(when.at, "set with a time other than 'now + duration' is not translated");
+    return false;
+  }
+  sdl::Action set = a;
+  set.arguments[0] = when.operands[1];
+  return timer_call(set, true, step);
+}
+
 bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
-  std::string format, values, kinds = "string";
+  std::string format, values, types = "string";
   for (const sdl::Expr& e : a.arguments) {
     if (e.kind == sdl::Expr::Kind::String) {
       format += format_text(e.text);
@@ -126,22 +185,17 @@ bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
     if (!v) return false;
     format += v->kind == "float" ? "%g" : (v->kind == "string" ? "%s" : "%d");
     values += ", " + v->text;
-    kinds += ", " + v->kind;
+    types += ", " + (v->kind.empty() ? std::string("int") : v->kind);
   }
-  // BIP calls only declared functions: printf once per list of argument kinds.
-  const std::string declaration = "extern function printf(" + kinds + ")";
-  if (std::find(extern_functions_.begin(), extern_functions_.end(), declaration) ==
-      extern_functions_.end()) {
-    extern_functions_.push_back(declaration);
-  }
+  need_function("printf(" + types + ")");
   step.statements.push_back("printf(\"" + format + (newline ? "\\n" : "") + "\"" + values + ");");
   return true;
 }
 
 bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, Step& step,
                                 Chain& chain, Outcome& out, bool& ended) {
-  for (const std::string& name : inlining_) {
-    if (name == folded(p.name)) {
+  for (const sdl::Procedure* q : inlining_) {
+    if (q == &p) {
       error(a.at, "recursive call of procedure '" + p.name + "' is not translated");
       return false;
     }
@@ -153,7 +207,8 @@ bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, S
     return false;
   }
   for (std::size_t k = 0; k < params.size(); ++k) {
-    if (!assign(params[k], a.arguments[k], step.statements)) return false;
+    const bool out_only = p.parameters[k].direction == sdl::FormalParameter::Direction::Out;
+    if (!out_only && !assign(params[k], a.arguments[k], step.statements)) return false;
   }
   scopes_.push_back(procedure_scopes_[&p]);
   for (const sdl::Variable& v : p.body.variables) {
@@ -168,7 +223,7 @@ bool Translator::procedure_call(const sdl::Procedure& p, const sdl::Action& a, S
   }
   if (!p.body.starts.empty())
     collect_labels(p.body.starts[0].transition.actions, true, label_tables_.back());
-  inlining_.push_back(folded(p.name));
+  inlining_.push_back(&p);
   const std::string key = chain.key;
   chain.key += "/" + std::to_string(++inline_count_);
   Outcome o;

@@ -45,6 +45,11 @@ Outcome Translator::decision(const sdl::Action& a, Step step, Chain& chain) {
 std::optional<std::string> Translator::answer_guard(const sdl::Expr& question,
                                                     const sdl::Answer& answer) {
   const asn1::Type* hint = type_of(question);
+  const bool structured =
+      hint != nullptr &&
+      (hint->kind == asn1::TypeKind::Sequence || hint->kind == asn1::TypeKind::SequenceOf ||
+       (hint->kind == asn1::TypeKind::Choice && question.kind != sdl::Expr::Kind::Call));
+  if (structured) return structured_answer(question, answer);
   std::optional<Scalar> q = scalar(question, hint);
   if (!q) return std::nullopt;
   std::string guard;
@@ -88,6 +93,21 @@ std::optional<std::string> Translator::answer_guard(const sdl::Expr& question,
   if (guard.empty()) {
     error(answer.at, "an answer without a condition is not translated");
     return std::nullopt;
+  }
+  return "(" + guard + ")";
+}
+
+std::optional<std::string> Translator::structured_answer(const sdl::Expr& question,
+                                                         const sdl::Answer& answer) {
+  std::string guard;
+  for (const sdl::RangeCondition& c : answer.conditions) {
+    if (c.kind != sdl::RangeCondition::Kind::Value || c.op != sdl::Operator::Equal) {
+      error(c.at, "a structured value is compared by equality only");
+      return std::nullopt;
+    }
+    std::optional<Scalar> equal = equality(question, c.low, true, c.at);
+    if (!equal) return std::nullopt;
+    guard += (guard.empty() ? "" : " || ") + equal->text;
   }
   return "(" + guard + ")";
 }

@@ -113,7 +113,13 @@ std::optional<Ref> Translator::reference(const sdl::Expr& e) {
     return std::nullopt;
   }
   if (e.kind == K::Field) {
-    if (std::optional<Ref> context = context_field(e)) return context;
+    const sdl::Expr& record = e.operands[0];
+    // OpenGEODE's `<function>_ctxt.<parameter>`: a context parameter.
+    if (record.kind == K::Name && folded(record.text) == folded(function_.name + "_ctxt")) {
+      if (auto c = context_.find(folded(e.text)); c != context_.end()) return c->second;
+      error(e.at, "'" + e.text + "' is not a context parameter of " + function_.name);
+      return std::nullopt;
+    }
     std::optional<Ref> base = reference(e.operands[0]);
     return base ? field(*base, e.text, e.at) : std::nullopt;
   }
@@ -177,6 +183,15 @@ std::optional<std::int64_t> Translator::constant(const sdl::Expr& e) {
     }
     return std::nullopt;
   }
+  if (e.kind == K::Call && e.operands.size() == 2 && e.operands[0].kind == K::Name &&
+      folded(e.operands[0].text) == "length") {
+    const bool was = quiet_;
+    quiet_ = true;
+    std::optional<Scalar> n = call_value(e, nullptr);
+    quiet_ = was;
+    if (!n) return std::nullopt;
+    return constant(sdl::Expr{K::Integer, sdl::Operator::None, n->text, {}, {}, e.at});
+  }
   if (e.kind == K::Unary && e.op == sdl::Operator::Negate) {
     std::optional<std::int64_t> v = constant(e.operands[0]);
     return v ? std::optional<std::int64_t>(-*v) : std::nullopt;
@@ -239,6 +254,12 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
 
 std::optional<Scalar> Translator::name_value(const sdl::Expr& e, const asn1::Type* hint) {
   const std::string name = folded(e.text);
+  // Compared with present(x), a name is an alternative of x's CHOICE before anything else.
+  if (hint != nullptr && hint->kind == asn1::TypeKind::Choice) {
+    for (std::size_t k = 0; k < hint->components.size(); ++k) {
+      if (folded(hint->components[k].name) == name) return Scalar{std::to_string(k + 1), "int"};
+    }
+  }
   for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
     auto found = it->find(name);
     if (found == it->end()) continue;
@@ -247,11 +268,6 @@ std::optional<Scalar> Translator::name_value(const sdl::Expr& e, const asn1::Typ
     if (r.leaves.size() == 1 && r.leaves[0].suffix.empty()) return Scalar{r.data, r.leaves[0].type};
     error(e.at, "'" + e.text + "' is a structured value, used where a single value is needed");
     return std::nullopt;
-  }
-  if (hint != nullptr && hint->kind == asn1::TypeKind::Choice) {
-    for (std::size_t k = 0; k < hint->components.size(); ++k) {
-      if (folded(hint->components[k].name) == name) return Scalar{std::to_string(k + 1), "int"};
-    }
   }
   if (hint != nullptr) {
     for (const asn1::Enumerant& en : hint->enumerants) {
@@ -320,7 +336,11 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
                                            const bipc::Location& at) {
   const asn1::Type* ta = type_of(a);
   const asn1::Type* tb = type_of(b);
-  const bool structured = [&] {
+  auto is_present = [](const sdl::Expr& x) {
+    return x.kind == sdl::Expr::Kind::Call && x.operands[0].kind == sdl::Expr::Kind::Name &&
+           folded(x.operands[0].text) == "present";
+  };
+  const bool structured = !is_present(a) && !is_present(b) && [&] {
     const auto kind = ta ? ta->kind : (tb ? tb->kind : asn1::TypeKind::Integer);
     return kind == asn1::TypeKind::Sequence || kind == asn1::TypeKind::Choice ||
            kind == asn1::TypeKind::SequenceOf;
@@ -334,6 +354,15 @@ std::optional<Scalar> Translator::equality(const sdl::Expr& a, const sdl::Expr& 
       return std::nullopt;
     }
     return Scalar{"(" + x->text + op + y->text + ")", "bool"};
+  }
+  auto literal = [](const sdl::Expr& x) {
+    return x.kind == sdl::Expr::Kind::Sequence || x.kind == sdl::Expr::Kind::Choice;
+  };
+  if (literal(a) || literal(b)) {
+    std::optional<Ref> r = reference(literal(a) ? b : a);
+    std::optional<std::string> text = r ? literal_equals(*r, literal(a) ? a : b) : std::nullopt;
+    if (!text) return std::nullopt;
+    return Scalar{equal ? "(" + *text + ")" : "!(" + *text + ")", "bool"};
   }
   std::optional<Ref> x = reference(a), y = reference(b);
   if (!x || !y) return std::nullopt;

@@ -45,12 +45,18 @@ void add_paths(const std::vector<sdl::Channel>& channels, const std::vector<std:
   }
 }
 
-std::optional<SignalInterface> signal_interface(const sdl::System& system, const std::string& name,
-                                                const asn1::DataView& data,
+std::optional<SignalInterface> signal_interface(const sdl::System& system,
+                                                const std::vector<const sdl::Block*>& blocks,
+                                                const std::string& name, const asn1::DataView& data,
                                                 bipc::Diagnostics& diags) {
   const sdl::SignalDeclaration* declaration = nullptr;
   for (const sdl::SignalDeclaration& s : system.signals) {
     if (folded(s.name) == folded(name)) declaration = &s;
+  }
+  for (const sdl::Block* b : blocks) {
+    for (const sdl::SignalDeclaration& s : b->signals) {
+      if (folded(s.name) == folded(name)) declaration = &s;
+    }
   }
   if (declaration == nullptr) {
     diags.error(system.at, "signal '" + name + "' is not declared in system " + system.name);
@@ -94,10 +100,10 @@ std::optional<FunctionSignature> sdl_system_signature(const sdl::System& system,
   signature.language = "SDL";
   const std::size_t errors = diags.error_count();
   for (const std::string& s : in) {
-    if (auto i = signal_interface(system, s, data, diags)) signature.provided.push_back(*i);
+    if (auto i = signal_interface(system, path, s, data, diags)) signature.provided.push_back(*i);
   }
   for (const std::string& s : out) {
-    if (auto i = signal_interface(system, s, data, diags)) signature.required.push_back(*i);
+    if (auto i = signal_interface(system, path, s, data, diags)) signature.required.push_back(*i);
   }
   if (diags.error_count() > errors) return std::nullopt;
   return signature;

@@ -1,7 +1,8 @@
 // The steps of a transition chain as BIP transitions: every step eager, so no time passes in an
-// intermediate place unless the step waits for a synchronisation. While a transition runs, the
-// place of the SDL state it started in stays marked (properties see SDL states only) and the
-// `ready` place's token is taken (no other transition of the state may start):
+// intermediate place unless the step waits for a synchronisation. In a process without nested
+// states, while a transition runs, the place of the SDL state it started in stays marked
+// (properties see SDL states only) and the `ready` place's token is taken (no other transition
+// of the state may start):
 //   state S to intermediate I:  from S, ready  to S, I
 //   I to J:                     from I         to J
 //   I (of S) to state T:        from S, I      to T, ready
@@ -29,13 +30,14 @@ bool Translator::is_fault_port(const std::string& port) const {
 }
 
 bool Translator::is_state_place(const std::string& place) const {
-  for (const auto& [name, state] : states_) {
-    if (state == place) return true;
+  for (const StableState& state : stable_) {
+    if (state.place == place) return true;
   }
   return false;
 }
 
 std::string Translator::marking_from(const Step& step, const std::string& to) const {
+  if (ready_place_.empty()) return step.from;
   if (is_state_place(step.from)) return step.from + ", " + ready_place_;
   const auto origin = origin_of_.find(step.from);
   const bool ends = is_state_place(to) || to == stop_place_;
@@ -46,6 +48,7 @@ std::string Translator::marking_from(const Step& step, const std::string& to) co
 }
 
 std::string Translator::marking_to(const Step& step, const std::string& to) const {
+  if (ready_place_.empty()) return to;
   if (is_state_place(to)) return to + ", " + ready_place_;
   if (!step.initial && is_state_place(step.from) && to != stop_place_) {
     return step.from + ", " + to;
@@ -91,11 +94,27 @@ std::string Translator::place(const Chain& chain) {
 }
 
 std::string Translator::branch_port(std::size_t k) {
-  while (branch_ports_.size() <= k) {
-    const std::size_t n = branch_ports_.size();
-    branch_ports_.push_back(fresh(n == 0 ? "silent" : "silent_" + std::to_string(n)));
+  std::string family;
+  for (const Level* l = level_; l != nullptr && l->parent != nullptr; l = l->parent) {
+    if (l->parent->composite != nullptr && l->parent->composite->is_aggregation) {
+      family = l->prefix;
+      break;
+    }
   }
-  return branch_ports_[k];
+  std::vector<std::string>& ports = branch_ports_[family];
+  while (ports.size() <= k) {
+    const std::size_t n = ports.size();
+    ports.push_back(fresh(family + (n == 0 ? "silent" : "silent_" + std::to_string(n))));
+    port_order_.push_back(ports.back());
+  }
+  return ports[k];
+}
+
+void Translator::start_in_region(const Level* aggregation, Step& step, Chain& chain) const {
+  if (aggregation == nullptr) return;
+  chain.busy = aggregation->busy;
+  step.guard = step.guard.empty() ? "!" + chain.busy : "(" + step.guard + ") && !" + chain.busy;
+  step.statements.insert(step.statements.begin(), chain.busy + " = true;");
 }
 
 }  // namespace smcbip::taste2bip::detail

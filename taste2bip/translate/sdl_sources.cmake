@@ -5,11 +5,12 @@ list(APPEND TASTE2BIP_SOURCES
   translate/sdl_atom_assign.cpp
   translate/sdl_atom_builtins.cpp
   translate/sdl_atom_calls.cpp
-  translate/sdl_atom_context.cpp
   translate/sdl_atom_data.cpp
   translate/sdl_atom_decision.cpp
   translate/sdl_atom_expr.cpp
   translate/sdl_atom_inputs.cpp
+  translate/sdl_atom_loops.cpp
+  translate/sdl_atom_nested.cpp
   translate/sdl_atom_signature.cpp
   translate/sdl_atom_states.cpp
   translate/sdl_atom_steps.cpp)
