@@ -235,7 +235,7 @@ endprocess F;)");
   ASSERT_TRUE(t.atom) << t.errors;
   const RunRecord r = run_process(t, {{0, "go", {"4"}}});
   EXPECT_EQ(reports(r), (std::vector<double>{13}));  // 3 + 1 + 2 + 3, plus 4
-  EXPECT_EQ(r.output, "sum 13 color 5 1 100%\n");
+  EXPECT_EQ(r.output, "sum 13 color 5 TRUE 100%\n");
 }
 
 TEST(SdlAtomBehaviour, ContinuousSignalFiresAsSoonAsItHolds) {
