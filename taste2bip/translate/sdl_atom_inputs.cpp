@@ -8,6 +8,22 @@
 
 namespace smcbip::taste2bip::detail {
 
+void Translator::refuse_unknown_inputs(const std::map<std::string, Handler>& handled) {
+  for (const auto& [name, h] : handled) {
+    const bool known =
+        timers_.count(name) > 0 ||
+        std::any_of(function_.provided.begin(), function_.provided.end(),
+                    [&](const SignalInterface& p) { return signal_key(p.name) == name; });
+    if (!known && reported_.insert(h.signal).second) {
+      error(h.signal->at,
+            name == "none_" || name == "none"
+                ? std::string("a spontaneous transition (input none) is not translated")
+                : "input '" + h.signal->name + "' names no provided interface or timer of " +
+                      function_.name);
+    }
+  }
+}
+
 void Translator::translate_state(const StableState& state) {
   const std::string& at = state.place;
   const auto blocks = blocks_of(state);
@@ -29,19 +45,7 @@ void Translator::translate_state(const StableState& state) {
       saved.push_back(signal_key(n));
     }
   }
-  for (const auto& [name, h] : handled) {
-    const bool known =
-        timers_.count(name) > 0 ||
-        std::any_of(function_.provided.begin(), function_.provided.end(),
-                    [&](const SignalInterface& p) { return signal_key(p.name) == name; });
-    if (!known && reported_.insert(h.signal).second) {
-      error(h.signal->at,
-            name == "none_" || name == "none"
-                ? std::string("a spontaneous transition (input none) is not translated")
-                : "input '" + h.signal->name + "' names no provided interface or timer of " +
-                      function_.name);
-    }
-  }
+  refuse_unknown_inputs(handled);
   const auto [region, aggregation] = region_of(state);
   auto owned = [&](const std::string& key) {
     return region == nullptr || owner_region(*aggregation, key) == region;
