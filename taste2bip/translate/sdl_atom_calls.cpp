@@ -176,6 +176,14 @@ bool Translator::sdl_timer_call(const sdl::Action& a, Step& step) {
 
 bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
   std::string format, values, types = "string";
+  auto flush = [&]() {
+    if (format.empty()) return;
+    need_function("printf(" + types + ")");
+    step.statements.push_back("printf(\"" + format + "\"" + values + ");");
+    format.clear();
+    values.clear();
+    types = "string";
+  };
   for (const sdl::Expr& e : a.arguments) {
     if (e.kind == sdl::Expr::Kind::String) {
       format += format_text(e.text);
@@ -183,12 +191,20 @@ bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
     }
     std::optional<Scalar> v = scalar(e);
     if (!v) return false;
+    if (v->kind == "bool") {
+      // Printed as OpenGEODE does, without passing a bool to printf.
+      flush();
+      need_function("printf(string)");
+      step.statements.push_back("if (" + v->text +
+                                ") then printf(\"TRUE\"); else printf(\"FALSE\"); fi");
+      continue;
+    }
     format += v->kind == "float" ? "%g" : (v->kind == "string" ? "%s" : "%d");
     values += ", " + v->text;
     types += ", " + (v->kind.empty() ? std::string("int") : v->kind);
   }
-  need_function("printf(" + types + ")");
-  step.statements.push_back("printf(\"" + format + (newline ? "\\n" : "") + "\"" + values + ");");
+  if (newline) format += "\\n";
+  flush();
   return true;
 }
 

@@ -8,6 +8,23 @@
 
 namespace smcbip::taste2bip::detail {
 
+void Translator::refuse_unknown_inputs(const std::map<std::string, Handler>& handled) {
+  for (const auto& [key, h] : handled) {
+    const std::string& name = key;  // clang 14 cannot capture a structured binding
+    const bool known =
+        timers_.count(name) > 0 ||
+        std::any_of(function_.provided.begin(), function_.provided.end(),
+                    [&](const SignalInterface& p) { return signal_key(p.name) == name; });
+    if (!known && reported_.insert(h.signal).second) {
+      error(h.signal->at,
+            name == "none_" || name == "none"
+                ? std::string("a spontaneous transition (input none) is not translated")
+                : "input '" + h.signal->name + "' names no provided interface or timer of " +
+                      function_.name);
+    }
+  }
+}
+
 void Translator::translate_state(const StableState& state) {
   const std::string& at = state.place;
   const auto blocks = blocks_of(state);
@@ -29,21 +46,8 @@ void Translator::translate_state(const StableState& state) {
       saved.push_back(signal_key(n));
     }
   }
-  for (const auto& [key, h] : handled) {
-    const std::string& name = key;  // clang 14 cannot capture a structured binding
-    const bool known =
-        timers_.count(name) > 0 ||
-        std::any_of(function_.provided.begin(), function_.provided.end(),
-                    [&](const SignalInterface& p) { return signal_key(p.name) == name; });
-    if (!known && reported_.insert(h.signal).second) {
-      error(h.signal->at,
-            name == "none_" || name == "none"
-                ? std::string("a spontaneous transition (input none) is not translated")
-                : "input '" + h.signal->name + "' names no provided interface or timer of " +
-                      function_.name);
-    }
-  }
-  const auto region_and_aggregation = region_of(state);
+  refuse_unknown_inputs(handled);
+  const auto region_and_aggregation = region_of(state);  // clang 14 cannot capture bindings
   const sdl::CompositeState* region = region_and_aggregation.first;
   const Level* aggregation = region_and_aggregation.second;
   auto owned = [&](const std::string& key) {

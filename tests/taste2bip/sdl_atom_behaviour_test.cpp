@@ -228,14 +228,14 @@ TEST(SdlAtomBehaviour, RecordsEnumerantsLoopsAndWriteln) {
         (green): output report(p.a + p.b);
         else: output report(-1);
       enddecision;
-      call writeln('sum ', p.a + p.b, ' color ', c);
+      call writeln('sum ', p.a + p.b, ' color ', c, ' ', c = green, ' 100%');
       nextstate Idle;
   endstate;
 endprocess F;)");
   ASSERT_TRUE(t.atom) << t.errors;
   const RunRecord r = run_process(t, {{0, "go", {"4"}}});
   EXPECT_EQ(reports(r), (std::vector<double>{13}));  // 3 + 1 + 2 + 3, plus 4
-  EXPECT_EQ(r.output, "sum 13 color 5\n");
+  EXPECT_EQ(r.output, "sum 13 color 5 TRUE 100%\n");
 }
 
 TEST(SdlAtomBehaviour, ContinuousSignalFiresAsSoonAsItHolds) {

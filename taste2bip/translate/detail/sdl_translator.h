@@ -238,6 +238,7 @@ class Translator {
                       std::map<std::string, LabelSite>& into);
   void translate_start();
   void translate_state(const StableState& state);
+  void refuse_unknown_inputs(const std::map<std::string, Handler>& handled);
   bool state_applies(const sdl::State& s, const std::string& state) const;
   void input_transition(const std::string& state, const SignalInterface& p, const Handler& h);
   void fault_transition(const std::string& state, const SignalInterface& p, const Handler& h);
