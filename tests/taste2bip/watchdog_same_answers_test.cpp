@@ -27,6 +27,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,13 +47,16 @@ std::string property_file(const std::string& name) {
   return file_text(std::filesystem::path(SMCBIP_SOURCE_DIR) / "tests/taste2bip/watchdog" / name);
 }
 
-/// The translated package with the Watchdog of watchdog_atom.bip, and with the lost heartbeat
+/// The translated package with the Watchdog of watchdog_atom.bip (with `abstract`, the
+/// translation's own abstract Watchdog instead), and with the lost heartbeat
 /// unless `nominal`; each checked by bipc's front end (a failure is a test failure).
-std::optional<std::string> translation_text(bool nominal) {
+std::optional<std::string> translation_text(bool nominal, bool abstract) {
   const std::string atom = file_text(watchdog_atom_file());
   EXPECT_FALSE(atom.empty()) << watchdog_atom_file();
+  std::map<std::string, std::string> behaviours;
+  if (!abstract) behaviours["Watchdog"] = atom;
   std::string why;
-  std::optional<std::string> package = translated_package(why, {{"Watchdog", atom}});
+  std::optional<std::string> package = translated_package(why, behaviours);
   EXPECT_TRUE(package) << why;
   if (package && !nominal) package = with_lost_heartbeat(*package, why);
   EXPECT_TRUE(package) << why;
@@ -63,8 +67,8 @@ std::optional<std::string> translation_text(bool nominal) {
 }
 
 std::vector<smc::QueryResult> translation_answers(const std::string& queries, bool nominal,
-                                                  std::uint64_t seed) {
-  const std::optional<std::string> text = translation_text(nominal);
+                                                  std::uint64_t seed, bool abstract = false) {
+  const std::optional<std::string> text = translation_text(nominal, abstract);
   if (!text) return {};
   std::string why;
   const std::optional<bipc::ir::System> system = load_bip_text(*text, "taste.bip", "Syst()", why);
@@ -128,6 +132,22 @@ TEST(WatchdogSameAnswers, WithoutALostHeartbeatBothModelsSendNoStopAndMeetTheDea
   expect_same_answers(original_answers(original, /*nominal=*/true, 20261129),
                       translation_answers(translated, /*nominal=*/true, 20261130), {0, 1},
                       {"a stop is sent", "(i) commands reach the motors in 10 ms"});
+}
+
+// Why the translation is given the original's Watchdog: its own abstract one may skip a relay
+// and sends its own all-zero data, so (nominal) a stop reaches BLSClient in almost every run and
+// a command misses the motors in almost every run, where the original answers 0 and 1.
+// Recorded (seed 20261131): a stop is sent 1 [0.98, 1]; (i) 0.0009 [0, 0.0209].
+TEST(WatchdogSameAnswers, TheAbstractWatchdogAnswersOtherwise) {
+  WATCHDOG_SKIP_WITHOUT_DATA();
+  const std::vector<smc::QueryResult> r = translation_answers(
+      "P=? [ F[0,1000] (BLSClient.Wait__2 && fired(BLSClient.silent)) ]\n"
+      "P=? [ G[0,1000] (fired(JoystickDriver_cmd_to_CmdDispatcher_cmd) -> "
+      "F[0,10] fired(BLSClient_mot_cmd_start)) ]\n",
+      /*nominal=*/true, 20261131, /*abstract=*/true);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_GT(r[0].estimate, kDelta) << "the abstract Watchdog never sent its zeros";
+  EXPECT_LT(r[1].estimate, 1 - kDelta) << "the abstract Watchdog relayed every command";
 }
 
 }  // namespace
