@@ -14,7 +14,8 @@
 // is within delta of the value the models' structure gives (1 or 0, derived in watchdog.mtl).
 // For these queries the true probabilities are 0 or 1 and every run agrees, so the estimates
 // are exact; for a probability strictly between 0 and 1, two models with the same one would
-// give estimates within 2 delta of each other with probability at least 0.98.
+// give estimates within 2 delta of each other with probability at least 0.98 (the bound the
+// one such query, TheFirstCommandRacesTheLostHeartbeatAlike, asserts).
 //
 // Answers recorded (estimate [interval], 6,623 runs each):
 //   with the lost heartbeat, original seed 20261127, translation seed 20261128:
@@ -28,11 +29,12 @@
 // Outside these properties the faulty models differ in one measure: how often the heartbeat is
 // lost. The fault's recovery (`silent`, lazy, t >= 150) fires at a date drawn in its window cut
 // at the next urgent date; in the translation the design's cyclic purge (every 80 ms, which the
-// original left out) brings that date closer (160 ms rather than the 200 ms step), so the
-// JoystickDriver recovers and fails again sooner: E[<=1000](count: fired(JoystickDriver.fault1))
-// is 6.68 on the original and 7 on the translation (2,000 runs each). No query here reads it:
-// in both, each recovery is followed by a new fault before the next step, so no command goes
-// out after the first fault and the watchdog sends its stop every 110 ms (9 stops in 1000 ms).
+// original left out) brings that date closer (for the first recovery, the purge at 160 ms
+// rather than the step at 200 ms), so the JoystickDriver recovers and fails again sooner:
+// E[<=1000](count: fired(JoystickDriver.fault1)) is 6.68 on the original and 7 on the translation
+// (2,000 runs each). No query here reads it: in both, each recovery is followed by a new fault
+// before the next step, so no command goes out after the first fault and the watchdog sends its
+// stop every 110 ms (9 stops in 1000 ms).
 #include <gtest/gtest.h>
 
 #include <cmath>
