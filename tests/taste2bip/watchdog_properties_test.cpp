@@ -18,20 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "engines/plugin.h"
-#include "smc/smc.h"
 #include "tests/taste2bip/shared_data.h"
+#include "tests/taste2bip/watchdog_answers.h"
 #include "tests/taste2bip/watchdog_model.h"
 
 namespace smcbip::taste2bip::test {
 namespace {
 
-constexpr double kDelta = 0.02, kAlpha = 0.01;
-
-/// The model entry smc runs: plain function pointers, so the model is reached through a static.
-const engines::Model* checked_model = nullptr;
-const engines::Model& entry_model() { return *checked_model; }
-void entry_externs(engines::Externs& externs) { add_watchdog_externs(externs); }
+constexpr double kDelta = kWatchdogDelta;
 
 /// The answers to `queries` (a property file's text) on the original, nominal or not.
 std::vector<smc::QueryResult> answers(const std::string& queries, bool nominal,
@@ -41,32 +35,8 @@ std::vector<smc::QueryResult> answers(const std::string& queries, bool nominal,
   EXPECT_TRUE(system) << why;
   if (!system) return {};
   if (nominal) remove_fault_transitions(*system);
-  monitors::ParsedProperties parsed = monitors::parse_properties(queries, "watchdog.mtl");
-  if (parsed.ok()) monitors::resolve_names(parsed.file, *system, parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  if (!parsed.ok()) return {};
-  const engines::InterpretedModel model(*system);
-  checked_model = &model;
-  engines::PluginEntry entry;
-  entry.model = &entry_model;
-  entry.register_externs = &entry_externs;
-  smc::CheckOptions options;
-  options.method = smc::Method::Pestim;
-  options.delta = kDelta;
-  options.alpha = kAlpha;
-  options.seed = seed;
-  options.threads = 2;
-  options.compiled = &entry;
-  std::vector<smc::QueryResult> results = smc::check_properties(*system, parsed.file, options);
-  checked_model = nullptr;
-  for (const smc::QueryResult& r : results) {
-    EXPECT_EQ(r.error, "");
-    EXPECT_EQ(r.samples, smc::chernoff_samples(kDelta, kAlpha));
-    EXPECT_EQ(r.undecided, 0u) << r.why_undecided.first_error;
-    std::cerr << "query " << r.query + 1 << ": " << r.estimate << " [" << r.ci.low << ", "
-              << r.ci.high << "] from " << r.samples << " runs\n";
-  }
-  return results;
+  return watchdog_answers(*system, queries, "watchdog.mtl", /*watchdog_externs=*/true, seed,
+                          "original");
 }
 
 TEST(WatchdogProperties, TheOriginalAnswersItsPropertyFile) {
