@@ -17,7 +17,8 @@ bool matches(ValueKind param, ValueKind arg) {
 }
 
 /// printf with BIP values: ints print through `ll` conversions, floats as double, strings as
-/// text. A conversion without a matching argument prints as written.
+/// text. A conversion without a matching argument, or one that prints no value (`%n`, `%*d`, a
+/// letter C does not define), prints as written.
 std::string format_printf(CallContext& context, std::span<const Val> args) {
   const std::string& format = context.strings.text(args[0].s);
   std::string out;
@@ -42,11 +43,17 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
       i = end;
       continue;
     }
-    std::string spec = format.substr(i, end - i);
-    while (!spec.empty() &&
-           std::string_view("hlLqjzt").find(spec.back()) != std::string_view::npos) {
-      spec.pop_back();
+    // Only the conversions that print a value: `%n` would write through the value as a
+    // pointer, `%*d` read a width that was never passed, and what C does not define is worse.
+    if (std::string_view("diouxXcsfeEgGaA").find(conversion) == std::string_view::npos) {
+      out += format.substr(i, end - i + 1);
+      i = end;
+      continue;
     }
+    std::string spec = format.substr(i, end - i);
+    // The length modifiers are this function's to choose (`ll`, or none): drop the written ones.
+    std::erase_if(
+        spec, [](char c) { return std::string_view("hlLqjzt").find(c) != std::string_view::npos; });
     if (next >= args.size()) {
       out += format.substr(i, end - i + 1);
       i = end;
