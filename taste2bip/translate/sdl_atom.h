@@ -11,8 +11,12 @@
 //  - every step eager: a provided interface's call `p_in` from a state, the chain's internal
 //    steps (ports `silent`, `silent_1`... of type `Port`, one per answer of a decision so that
 //    answers never share a port), outputs `r_out` (and `r_result` for a synchronous required
-//    interface), then `p_return` into the next state. A call the state does not handle is
-//    consumed (`p_in` then `p_return`); a saved one waits in the caller's FIFO;
+//    interface), then `p_return` into the next state. `p_return` and `r_result` are lazy: the
+//    interface's wrapper, which joins them, gives them their date. A call the state does not
+//    handle is consumed (`p_in` then `p_return`); a saved one waits in the caller's FIFO;
+//  - in a process without nested states, a place `ready` whose token a transition takes while
+//    it runs, the state's place staying marked (`from S, ready to S, S__1` ... `from S, S__2 to
+//    T, ready`): properties see the SDL state, never a transition's intermediate place;
 //  - per timer t: `clock t_clock`, `t_armed`, `t_value` and the internal port `t_expired`, which
 //    fires in a state once armed and `t_clock >= t_value`;
 //  - a composite state is entered at a place named after it (`<Composite>_via_<entry>` for an
