@@ -160,8 +160,9 @@ std::optional<AtomType> Translator::run() {
   if (composite_levels_.empty()) {
     ready_place_ = fresh("ready");  // after the states, which keep their SDL names
   } else {
-    notes_.push_back("nested states: while a transition runs, the atom is in an intermediate "
-                     "place, which properties see");
+    notes_.push_back(
+        "nested states: while a transition runs, the atom is in an intermediate "
+        "place, which properties see");
   }
   label_tables_.emplace_back();
   for (const auto& level : levels_) collect_body_labels(*level->body, label_tables_.back());

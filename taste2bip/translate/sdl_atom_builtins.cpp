@@ -82,6 +82,10 @@ std::optional<Scalar> Translator::call_value(const sdl::Expr& e, const asn1::Typ
     error(e.at, "a call of procedure '" + callee.text + "' inside an expression is not translated");
     return std::nullopt;
   }
+  return scalar_reference(e);
+}
+
+std::optional<Scalar> Translator::scalar_reference(const sdl::Expr& e) {
   std::optional<Ref> r = reference(e);
   if (!r) return std::nullopt;
   if (r->leaves.size() == 1 && r->leaves[0].suffix.empty()) {

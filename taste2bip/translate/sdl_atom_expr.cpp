@@ -222,15 +222,8 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
       return name_value(e, hint);
     case K::Call:
       return call_value(e, hint);
-    case K::Field: {
-      std::optional<Ref> r = reference(e);
-      if (!r) return std::nullopt;
-      if (r->leaves.size() == 1 && r->leaves[0].suffix.empty()) {
-        return Scalar{r->data, r->leaves[0].type};
-      }
-      error(e.at, "a structured value is used where a single value is needed");
-      return std::nullopt;
-    }
+    case K::Field:
+      return scalar_reference(e);
     case K::Unary: {
       std::optional<Scalar> v = scalar(e.operands[0], hint);
       if (!v) return std::nullopt;

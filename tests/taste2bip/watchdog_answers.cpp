@@ -52,4 +52,15 @@ std::vector<smc::QueryResult> watchdog_answers(const bipc::ir::System& system,
   return results;
 }
 
+std::vector<smc::QueryResult> original_watchdog_answers(const std::string& queries, bool nominal,
+                                                        std::uint64_t seed) {
+  std::string why;
+  std::optional<bipc::ir::System> system = load_watchdog_original(why);
+  EXPECT_TRUE(system) << why;
+  if (!system) return {};
+  if (nominal) remove_fault_transitions(*system);
+  return watchdog_answers(*system, queries, "watchdog.mtl", /*watchdog_externs=*/true, seed,
+                          "original");
+}
+
 }  // namespace smcbip::taste2bip::test

@@ -28,4 +28,9 @@ std::vector<smc::QueryResult> watchdog_answers(const bipc::ir::System& system,
                                                const std::string& file_name, bool watchdog_externs,
                                                std::uint64_t seed, const std::string& label);
 
+/// watchdog_answers on the original translator's model (watchdog_model.h), with its fault
+/// transitions (or without them: `nominal`), its property file named watchdog.mtl.
+std::vector<smc::QueryResult> original_watchdog_answers(const std::string& queries, bool nominal,
+                                                        std::uint64_t seed);
+
 }  // namespace smcbip::taste2bip::test

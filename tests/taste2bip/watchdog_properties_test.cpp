@@ -27,24 +27,13 @@ namespace {
 
 constexpr double kDelta = kWatchdogDelta;
 
-/// The answers to `queries` (a property file's text) on the original, nominal or not.
-std::vector<smc::QueryResult> answers(const std::string& queries, bool nominal,
-                                      std::uint64_t seed) {
-  std::string why;
-  std::optional<bipc::ir::System> system = load_watchdog_original(why);
-  EXPECT_TRUE(system) << why;
-  if (!system) return {};
-  if (nominal) remove_fault_transitions(*system);
-  return watchdog_answers(*system, queries, "watchdog.mtl", /*watchdog_externs=*/true, seed,
-                          "original");
-}
-
 TEST(WatchdogProperties, TheOriginalAnswersItsPropertyFile) {
   WATCHDOG_SKIP_WITHOUT_DATA();
   const std::string file =
       file_text(std::filesystem::path(SMCBIP_SOURCE_DIR) / "tests/taste2bip/watchdog/watchdog.mtl");
   ASSERT_FALSE(file.empty());
-  const std::vector<smc::QueryResult> r = answers(file, /*nominal=*/false, 20261125);
+  const std::vector<smc::QueryResult> r =
+      original_watchdog_answers(file, /*nominal=*/false, 20261125);
   ASSERT_EQ(r.size(), 3u);
   EXPECT_GE(r[0].estimate, 1 - kDelta) << "(i) a command missed the motors' deadline";
   EXPECT_GE(r[1].estimate, 1 - kDelta) << "(ii) a lost heartbeat without a stop in 110 ms";
@@ -53,7 +42,7 @@ TEST(WatchdogProperties, TheOriginalAnswersItsPropertyFile) {
 
 TEST(WatchdogProperties, WithoutALostHeartbeatNoStopIsSent) {
   WATCHDOG_SKIP_WITHOUT_DATA();
-  const std::vector<smc::QueryResult> r = answers(
+  const std::vector<smc::QueryResult> r = original_watchdog_answers(
       "P=? [ F[0,1000] BLSClient.l4 ]\n"
       "P=? [ G[0,1000] (fired(JoystickDriver2CmdDispatcher_cmd) -> "
       "F[0,10] fired(BLSClient_mot_cmd2BLSClient)) ]\n",

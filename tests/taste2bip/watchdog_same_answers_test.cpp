@@ -90,17 +90,6 @@ std::vector<smc::QueryResult> translation_answers(const std::string& queries, bo
                           /*watchdog_externs=*/false, seed, "translation");
 }
 
-std::vector<smc::QueryResult> original_answers(const std::string& queries, bool nominal,
-                                               std::uint64_t seed) {
-  std::string why;
-  std::optional<bipc::ir::System> system = load_watchdog_original(why);
-  EXPECT_TRUE(system) << why;
-  if (!system) return {};
-  if (nominal) remove_fault_transitions(*system);
-  return watchdog_answers(*system, queries, "watchdog.mtl", /*watchdog_externs=*/true, seed,
-                          "original");
-}
-
 /// Each query's estimates on both models within delta of each other and of `expected`.
 void expect_same_answers(const std::vector<smc::QueryResult>& original,
                          const std::vector<smc::QueryResult>& translation,
@@ -125,7 +114,7 @@ TEST(WatchdogSameAnswers, TheLostHeartbeatAndTheDeadlineAnswerAlikeOnBothModels)
   ASSERT_FALSE(original.empty());
   ASSERT_FALSE(translated.empty());
   expect_same_answers(
-      original_answers(original, /*nominal=*/false, 20261127),
+      original_watchdog_answers(original, /*nominal=*/false, 20261127),
       translation_answers(translated, /*nominal=*/false, 20261128), {1, 1, 0},
       {"(i) commands reach the motors in 10 ms", "(ii) a lost heartbeat gives a stop in 110 ms",
        "(iii) a lost heartbeat gives a stop in 100 ms"});
@@ -139,7 +128,7 @@ TEST(WatchdogSameAnswers, WithoutALostHeartbeatBothModelsSendNoStopAndMeetTheDea
       "F[0,10] fired(BLSClient_mot_cmd2BLSClient)) ]\n";
   const std::string translated = property_file("watchdog_translation_nominal.mtl");
   ASSERT_FALSE(translated.empty());
-  expect_same_answers(original_answers(original, /*nominal=*/true, 20261129),
+  expect_same_answers(original_watchdog_answers(original, /*nominal=*/true, 20261129),
                       translation_answers(translated, /*nominal=*/true, 20261130), {0, 1},
                       {"a stop is sent", "(i) commands reach the motors in 10 ms"});
 }
@@ -152,7 +141,7 @@ TEST(WatchdogSameAnswers, WithoutALostHeartbeatBothModelsSendNoStopAndMeetTheDea
 // (seed 20261132), translation 0.5058 [0.4858, 0.5258] (seed 20261133): 0.0098 apart.
 TEST(WatchdogSameAnswers, TheFirstCommandRacesTheLostHeartbeatAlike) {
   WATCHDOG_SKIP_WITHOUT_DATA();
-  const std::vector<smc::QueryResult> original = original_answers(
+  const std::vector<smc::QueryResult> original = original_watchdog_answers(
       "P=? [ !JoystickDriver.l5 U[0,1000] fired(JoystickDriver2CmdDispatcher_cmd) ]\n",
       /*nominal=*/false, 20261132);
   const std::vector<smc::QueryResult> translation = translation_answers(

@@ -145,6 +145,8 @@ class Translator {
   std::optional<Scalar> scalar(const sdl::Expr& e, const asn1::Type* hint = nullptr);
   std::optional<Scalar> name_value(const sdl::Expr& e, const asn1::Type* hint);
   std::optional<Scalar> binary(const sdl::Expr& e);
+  /// The variable (or part of one) `e` names, as a scalar; an error for a structured value.
+  std::optional<Scalar> scalar_reference(const sdl::Expr& e);
   /// `e` as a guard: a bool expression, else an error naming `what` it is the condition of.
   std::optional<Scalar> condition(const sdl::Expr& e, const char* what);
   std::optional<Scalar> call_value(const sdl::Expr& e, const asn1::Type* hint);
