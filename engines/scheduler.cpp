@@ -26,7 +26,8 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
 
 void Simulator::Shared::prepare(const Externs& externs) {
   problem = build_layout(system, layout);
-  if (problem.empty()) bind_functions(system, externs, strings, functions);
+  this->externs = externs;
+  if (problem.empty()) bind_functions(system, this->externs, strings, functions);
   if (problem.empty()) problem = load_custom_distributions(system, custom);
   seed = options.seed ? *options.seed : std::random_device{}();
   stochastic = options.stochastic.value_or(has_stochastic_ports(system));

@@ -31,6 +31,9 @@ struct Simulator::Shared {
   SimulateOptions options;
   Layout layout;
   StringPool strings;
+  /// The caller's extern functions, copied: `functions` points into this copy, so a registry
+  /// that does not outlive the simulator (a temporary) is fine.
+  Externs externs;
   BoundFunctions functions;
   CustomDistributions custom;
   std::string problem;
@@ -40,7 +43,8 @@ struct Simulator::Shared {
   Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
   Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
       : owned(std::move(m)), model(*owned), system(owned->system()), options(o) {}
-  /// Builds the layout, binds `externs`, loads the custom distributions and fixes the seed;
+  /// Builds the layout, binds (a copy of) `externs`, loads the custom distributions and fixes
+  /// the seed;
   /// `problem` says what failed.
   void prepare(const Externs& externs);
 };

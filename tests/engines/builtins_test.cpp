@@ -1,12 +1,15 @@
 // The builtin printf of interpreted models: BIP values through C's conversions, and nothing a
-// model writes in its format (`%n`, `%*d`, a stray `%`) reaches C's printf unchecked.
+// model writes in its format (`%n`, `%*d`, a stray `%`) reaches C's printf unchecked. And a
+// simulator keeps the extern functions it is given.
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "engines/engines.h"
 #include "engines/externs.h"
+#include "tests/engines/temp_model.h"
 
 namespace smcbip::engines {
 namespace {
@@ -51,6 +54,51 @@ TEST(BuiltinPrintf, WhatPrintsNoValueIsPrintedAsWritten) {
   EXPECT_EQ(
       printed("%hhd|%Lf", {ValueKind::Int, ValueKind::Float}, {make_int(300), make_float(0.5)}),
       "300|0.500000");  // the length modifiers are printf's own choice
+}
+
+}  // namespace
+}  // namespace smcbip::engines
+
+namespace smcbip::engines {
+namespace {
+
+Externs with_twice() {
+  Externs externs = Externs::with_builtins();
+  externs.add("twice", [](std::int64_t x) { return 2 * x; });
+  return externs;
+}
+
+TEST(SimulatorExterns, ARegistryThatDoesNotOutliveTheSimulatorIsFine) {
+  const auto system = tests::load_model_text(R"(package p
+  extern function int twice(int)
+  extern function printf(string, int)
+  port type Port()
+  atom type A()
+    data int x = 1
+    export port Port go()
+    place S
+    initial to S
+    on go from S to S do { x = twice(x); printf("%d\n", x); }
+  end
+  connector type Solo(Port p)
+    define p
+  end
+  compound type Top()
+    component A a()
+    connector Solo c(a.go)
+  end
+end
+)",
+                                             "Top()");
+  ASSERT_TRUE(system);
+  SimulateOptions options;
+  options.seed = 1;
+  options.limit = 3;
+  Simulator simulator(*system, options, with_twice());  // the registry dies here
+  std::ostringstream trace, output;
+  const RunResult result = simulator.run(0, RunStreams{trace, output});
+  EXPECT_EQ(result.code, kRunOk) << result.message;
+  EXPECT_EQ(output.str(), "2\n4\n8\n");
 }
 
 }  // namespace
