@@ -11,7 +11,7 @@ namespace smcbip::tests {
 
 struct GeneratedModel {
   const char* name;
-  const char* file;  // relative to the source folder
+  const char* file;  // relative to the source folder, or absolute (a model the build makes)
   const char* root;
   engines::CompiledModel::CodeFactory make_code;
   const bipc::ir::System& (*system)();  // the IR embedded in the generated sources
