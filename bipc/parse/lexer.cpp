@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include "bipc/utf8.h"
+
 namespace smcbip::bipc::detail {
 
 namespace {
@@ -36,36 +38,6 @@ void append_utf8(std::string& out, std::uint32_t code_point) {
     out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
     out += static_cast<char>(0x80 | (code_point & 0x3F));
   }
-}
-
-// The length of the well-formed UTF-8 sequence starting at text[pos], or 0 when none starts
-// there: the Unicode Standard's table 3-7, without overlong forms, surrogates or code points
-// beyond U+10FFFF (what JSON output and other UTF-8 readers accept).
-std::size_t well_formed_utf8(std::string_view text, std::size_t pos) {
-  auto byte_at = [&](std::size_t i) { return static_cast<unsigned char>(text[pos + i]); };
-  const unsigned char lead = byte_at(0);
-  if (lead < 0x80) return 1;
-  std::size_t length = 0;
-  unsigned char second_low = 0x80, second_high = 0xBF;
-  if (lead >= 0xC2 && lead <= 0xDF) {
-    length = 2;
-  } else if (lead >= 0xE0 && lead <= 0xEF) {
-    length = 3;
-    if (lead == 0xE0) second_low = 0xA0;
-    if (lead == 0xED) second_high = 0x9F;
-  } else if (lead >= 0xF0 && lead <= 0xF4) {
-    length = 4;
-    if (lead == 0xF0) second_low = 0x90;
-    if (lead == 0xF4) second_high = 0x8F;
-  } else {
-    return 0;
-  }
-  if (pos + length > text.size()) return 0;
-  if (byte_at(1) < second_low || byte_at(1) > second_high) return 0;
-  for (std::size_t i = 2; i < length; ++i) {
-    if (byte_at(i) < 0x80 || byte_at(i) > 0xBF) return 0;
-  }
-  return length;
 }
 
 // The length of the UTF-8 sequence starting at text[pos], or 1 when it is not a valid one.

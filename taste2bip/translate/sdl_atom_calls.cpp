@@ -2,6 +2,7 @@
 // synchronous one), timers, writeln/write as printf, and procedures inlined at the call.
 #include <algorithm>
 
+#include "bipc/utf8.h"
 #include "taste2bip/names.h"
 #include "taste2bip/translate/detail/sdl_translator.h"
 
@@ -186,6 +187,10 @@ bool Translator::write_call(const sdl::Action& a, bool newline, Step& step) {
   };
   for (const sdl::Expr& e : a.arguments) {
     if (e.kind == sdl::Expr::Kind::String) {
+      if (!bipc::is_utf8(e.text)) {
+        error(e.at, "a string holding bytes that are not UTF-8 (BIP text is UTF-8)");
+        return false;
+      }
       format += format_text(e.text);
       continue;
     }

@@ -1,5 +1,6 @@
 // SDL expressions as BIP expressions over the leaves of the variables: references, names
 // (variables, enumerants, ASN.1 values), operators and structured equality.
+#include "bipc/utf8.h"
 #include "taste2bip/names.h"
 #include "taste2bip/translate/detail/sdl_translator.h"
 
@@ -217,6 +218,10 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
     case K::Boolean:
       return Scalar{e.text, "bool"};
     case K::String:
+      if (!bipc::is_utf8(e.text)) {
+        error(e.at, "a string holding bytes that are not UTF-8 (BIP text is UTF-8)");
+        return std::nullopt;
+      }
       return Scalar{string_literal(e.text), "string"};
     case K::Name:
       return name_value(e, hint);

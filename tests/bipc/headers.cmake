@@ -4,6 +4,7 @@ set(BIPC_PUBLIC_HEADERS
   bipc/diagnostics.h
   bipc/options.h
   bipc/output_file.h
+  bipc/utf8.h
   bipc/input_file.h
   bipc/errors.h
   bipc/exit_codes.h
