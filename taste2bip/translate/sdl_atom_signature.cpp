@@ -106,6 +106,7 @@ std::optional<FunctionSignature> sdl_system_signature(const sdl::System& system,
     if (auto i = signal_interface(system, path, s, data, diags)) signature.required.push_back(*i);
   }
   if (diags.error_count() > errors) return std::nullopt;
+  separate_data_names(signature);
   return signature;
 }
 

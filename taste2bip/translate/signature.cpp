@@ -84,6 +84,15 @@ void keep_data_apart_from_ports(FunctionSignature& f) {
 
 }  // namespace
 
+void separate_data_names(FunctionSignature& f) {
+  for (SignalInterface& r : f.required) {
+    for (const SignalInterface& p : f.provided) {
+      if (p.name == r.name) r.data_prefix = r.name + "_ri";
+    }
+  }
+  keep_data_apart_from_ports(f);
+}
+
 std::vector<std::string> SignalInterface::data_names(bool out) const {
   std::vector<std::string> names;
   for (const SignalParameter& p : parameters) {
@@ -115,11 +124,8 @@ FunctionSignature function_signature(const InterfaceView& view, std::size_t inde
   for (const Interface& r : f.required) {
     const InterfaceKind kind = reached_kind(view, f, r).value_or(InterfaceKind::Any);
     out.required.push_back(signal_interface(r, kind, data, diags));
-    for (const SignalInterface& p : out.provided) {
-      if (p.name == out.required.back().name) out.required.back().data_prefix += "_ri";
-    }
   }
-  keep_data_apart_from_ports(out);
+  separate_data_names(out);
   for (const ContextParameter& c : f.context) {
     if (c.type == "Timer") {
       out.context_timers.push_back(bip_identifier(c.name));

@@ -87,6 +87,11 @@ struct FunctionSignature {
 FunctionSignature function_signature(const InterfaceView& view, std::size_t index,
                                      const asn1::DataView& data, bipc::Diagnostics& diags);
 
+/// Gives the interfaces of `f` data names of their own: a required interface named like a
+/// provided one takes the prefix `<name>_ri`, an interface whose data would be named like a port
+/// `<prefix>_data`. function_signature and sdl_system_signature apply it.
+void separate_data_names(FunctionSignature& f);
+
 /// The data and port declarations of the contract above, as atom type body lines.
 std::string interface_declarations(const FunctionSignature& function);
 
