@@ -1,5 +1,10 @@
 // SDL expressions as BIP expressions over the leaves of the variables: references, names
 // (variables, enumerants, ASN.1 values), operators and structured equality.
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+
 #include "bipc/utf8.h"
 #include "taste2bip/names.h"
 #include "taste2bip/translate/detail/sdl_translator.h"
@@ -62,6 +67,13 @@ const char* bip_operator(sdl::Operator op) {
 bool is_arithmetic(sdl::Operator op) {
   return op == sdl::Operator::Plus || op == sdl::Operator::Minus || op == sdl::Operator::Times ||
          op == sdl::Operator::Divide || op == sdl::Operator::Mod || op == sdl::Operator::Rem;
+}
+
+/// Whether the digits fit a 64-bit int (what BIP's int literals are).
+bool fits_int(const std::string& digits) {
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  return error == std::errc() && end == digits.data() + digits.size();
 }
 
 bool numeric(const std::string& kind) { return kind == "int" || kind == "float"; }
@@ -195,14 +207,20 @@ std::optional<std::int64_t> Translator::constant(const sdl::Expr& e) {
   }
   if (e.kind == K::Unary && e.op == sdl::Operator::Negate) {
     std::optional<std::int64_t> v = constant(e.operands[0]);
-    return v ? std::optional<std::int64_t>(-*v) : std::nullopt;
+    std::int64_t negated = 0;
+    if (!v || __builtin_sub_overflow(std::int64_t{0}, *v, &negated)) return std::nullopt;
+    return negated;
   }
   if (e.kind == K::Binary && (e.op == sdl::Operator::Plus || e.op == sdl::Operator::Minus ||
                               e.op == sdl::Operator::Times)) {
     std::optional<std::int64_t> a = constant(e.operands[0]), b = constant(e.operands[1]);
     if (!a || !b) return std::nullopt;
-    if (e.op == sdl::Operator::Plus) return *a + *b;
-    return e.op == sdl::Operator::Minus ? *a - *b : *a * *b;
+    std::int64_t result = 0;  // a constant that overflows is no constant
+    const bool overflow = e.op == sdl::Operator::Plus    ? __builtin_add_overflow(*a, *b, &result)
+                          : e.op == sdl::Operator::Minus ? __builtin_sub_overflow(*a, *b, &result)
+                                                         : __builtin_mul_overflow(*a, *b, &result);
+    if (overflow) return std::nullopt;
+    return result;
   }
   return std::nullopt;
 }
@@ -211,9 +229,17 @@ std::optional<Scalar> Translator::scalar(const sdl::Expr& e, const asn1::Type* h
   using K = sdl::Expr::Kind;
   switch (e.kind) {
     case K::Integer:
+      if (!fits_int(e.text)) {
+        error(e.at, "the integer " + e.text + " is beyond BIP's 64-bit int");
+        return std::nullopt;
+      }
       return Scalar{e.text, "int"};
     case K::Real:
       if (e.text.find("infinity") != std::string::npos) break;
+      if (!std::isfinite(std::strtod(e.text.c_str(), nullptr))) {
+        error(e.at, "the real " + e.text + " is beyond a double");
+        return std::nullopt;
+      }
       return Scalar{real_text(e.text), "float"};
     case K::Boolean:
       return Scalar{e.text, "bool"};

@@ -51,12 +51,13 @@ bool Translator::for_loop(const sdl::ForLoop& loop, Step& step, Chain& chain, Ou
     error(it.at, "a range with a step of 0");
     return false;
   }
-  for (std::int64_t v = low; by > 0 ? v < high : v > high; v += by) {
+  for (std::int64_t v = low; by > 0 ? v < high : v > high;) {
     if (values.size() == kMaxIterations) {
       error(it.at, "a loop of more than 64 iterations is not unrolled");
       return false;
     }
     values.push_back(Binding{std::nullopt, v});
+    if (__builtin_add_overflow(v, by, &v)) break;  // the next value is beyond any bound
   }
   return unrolled(loop, values, step, chain, out, ended);
 }
