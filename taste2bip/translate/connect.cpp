@@ -62,6 +62,7 @@ void cyclic(const FunctionSignature& f, const SignalInterface& p, Wcet wcet, Pac
       std::to_string(whole_milliseconds(i.dispatch_offset.value_or(0), what + " offset", parts)) +
       wcet_arguments(i, what, wcet, parts);
   parts.components.push_back("    component TASTE_Cyclic " + instance + "(" + args + ")\n");
+  parts.report.push_back(what + ": cyclic, wrapper " + instance + " TASTE_Cyclic(" + args + ")");
   const std::string sync = use_connector_type({}, 0, parts);
   parts.connectors.push_back(
       connector(sync, instance + "_start", {instance + ".start", f.name + "." + p.name + "_in"}));
@@ -97,6 +98,8 @@ void sporadic(const FunctionSignature& f, const SignalInterface& p, Wcet wcet, P
       std::to_string(whole_milliseconds(i.period.value_or(0), what + " MIAT", parts)) + ", " +
       deadline_argument(i, what, parts) + wcet_arguments(i, what, wcet, parts);
   parts.components.push_back("    component " + type + " " + instance + "(" + args + ")\n");
+  parts.report.push_back(what + ": sporadic, queue of " + std::to_string(size) + ", wrapper " +
+                         instance + " " + type + "(" + args + ")");
   parts.connectors.push_back(connector(use_connector_type(types, 0, parts), instance + "_start",
                                        {instance + ".start", f.name + "." + p.name + "_in"}));
   parts.connectors.push_back(connector(use_connector_type({}, 0, parts), instance + "_done",
@@ -112,6 +115,10 @@ void synchronous(const FunctionSignature& f, const SignalInterface& p, Wcet wcet
   if (!args.empty()) args = args.substr(2);
   parts.components.push_back("    component TASTE_Synchronous " + f.name + "_" + p.name + "(" +
                              args + ")\n");
+  parts.report.push_back(what +
+                         (p.kind == InterfaceKind::Protected ? ": protected" : ": unprotected") +
+                         ", run in its caller's thread, wrapper " + f.name + "_" + p.name +
+                         " TASTE_Synchronous(" + args + ")");
   if (p.kind == InterfaceKind::Unprotected) {
     parts.report.push_back(what + ": unprotected, yet run one at a time with " + f.name +
                            "'s other interfaces (one atom per function)");
