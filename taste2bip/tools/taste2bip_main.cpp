@@ -74,9 +74,10 @@ int translate_design(const Arguments& args) {
 int run(int argc, char** argv) {
   CLI::App app{"taste2bip: a TASTE design (interface view, data view, SDL) as BIP packages"};
   Arguments args;
-  app.add_option("interface_view", args.design.interface_view,
+  app.add_option("IV", args.design.interface_view,
                  "the interface view: InterfaceView.aadl or interfaceview.xml")
-      ->required();
+      ->required()
+      ->type_name("FILE");
   cli::once_per_use(app.add_option("--dataview", args.design.data_views,
                                    "an ASN.1 file of the data view (default: every .asn file "
                                    "in the interface view's folder and below)"))
@@ -89,16 +90,19 @@ int run(int argc, char** argv) {
                                    "the atom type (BIP) of a function without SDL, instead of "
                                    "an abstract one"))
       ->type_name("FUNCTION=FILE");
-  app.add_option("-o,--output", args.output, "the folder to write the packages in")->required();
+  app.add_option("-o,--output", args.output, "the folder to write the packages in")
+      ->required()
+      ->type_name("DIR");
   app.add_option("--package", args.package.name, "the nominal package's name")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name("NAME");
   const std::map<std::string, Wcet> wcet{
       {"zero", Wcet::Zero}, {"interval", Wcet::Interval}, {"uniform", Wcet::Uniform}};
   app.add_option("--wcet", args.package.wcet,
-                 "how long an interface runs: " +
-                     cli::choices_text({"zero", "interval", "uniform"}) + " (default zero)")
-      ->transform(CLI::CheckedTransformer(wcet, CLI::ignore_case))
-      ->type_name("MODE");
+                 "how long a provided interface runs: no time, any time in its WCET bounds, or a "
+                 "uniform draw in them (default zero)")
+      ->transform(CLI::CheckedTransformer(wcet, CLI::ignore_case).description(""))
+      ->option_text(cli::choices_text({"zero", "interval", "uniform"}));
   cli::add_version_flags(app, "taste2bip");
   if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;
   if (bip_identifier(args.package.name) != args.package.name) {
