@@ -95,19 +95,43 @@ TEST(TranslatePortTypes, EqualTypeListsShareOnePortType) {
   EXPECT_NE(port_type_name({"int", "int"}), port_type_name({"int"}));
 }
 
+/// An interface of `kind` with these parameters (the view's other attributes unset).
+Interface interface(const std::string& name, InterfaceKind kind,
+                    std::vector<Parameter> parameters = {}) {
+  Interface i;
+  i.name = name;
+  i.kind = kind;
+  i.parameters = std::move(parameters);
+  return i;
+}
+
+Parameter parameter(Parameter::Direction direction, const std::string& name,
+                    const std::string& type) {
+  Parameter p;
+  p.direction = direction;
+  p.name = name;
+  p.type = type;
+  return p;
+}
+
 /// A design of two C functions: Caller's cyclic `tick` calls Callee's protected `get(in x, out
 /// y)` and sporadic `put(v)`.
 Design small_design(bipc::Diagnostics& diags, InterfaceKind get_kind) {
   Design design;
   design.data = resolved(kTypes, diags);
   Function caller{"Caller", "C", {}, {}, {}, std::nullopt, false, {}};
-  Interface tick{"tick", InterfaceKind::Cyclic, {}, 100.0, 20.0, 0.0, std::nullopt, 1.0, 2.0, {}};
+  Interface tick = interface("tick", InterfaceKind::Cyclic);
+  tick.period = 100.0;
+  tick.deadline = 20.0;
+  tick.dispatch_offset = 0.0;
+  tick.wcet_low = 1.0;
+  tick.wcet_high = 2.0;
   caller.provided.push_back(tick);
   using Direction = Parameter::Direction;
-  Interface get{"get",
-                InterfaceKind::Any,
-                {{Direction::In, "x", "Mode", {}}, {Direction::Out, "y", "Motion2D", {}}}};
-  Interface put{"put", InterfaceKind::Any, {{Direction::In, "v", "Angle", {}}}};
+  Interface get = interface("get", InterfaceKind::Any,
+                            {parameter(Direction::In, "x", "Mode"),
+                             parameter(Direction::Out, "y", "Motion2D")});
+  Interface put = interface("put", InterfaceKind::Any, {parameter(Direction::In, "v", "Angle")});
   caller.required = {get, put};
   Function callee{"Callee", "C", {}, {}, {}, std::nullopt, false, {}};
   get.kind = get_kind;
@@ -211,8 +235,10 @@ TEST(TranslateFaults, FaultSignalsOfSdlFunctionsBecomeFaultTransitionsOfTheFault
   Design design;
   design.data = resolved(kTypes, diags);
   Function sensor{"Sensor", "SDL", {}, {}, {}, std::nullopt, false, {}};
-  Interface tick{"tick", InterfaceKind::Cyclic, {}, 100.0, 100.0, 0.0, std::nullopt, {}, {}, {}};
-  Interface stuck{"fault_stuck", InterfaceKind::Sporadic};
+  Interface tick = interface("tick", InterfaceKind::Cyclic);
+  tick.period = 100.0;
+  tick.deadline = 100.0;
+  Interface stuck = interface("fault_stuck", InterfaceKind::Sporadic);
   stuck.queue_size = 1;
   sensor.provided = {tick, stuck};
   design.view.functions = {sensor};
