@@ -27,10 +27,17 @@ std::string connector(const std::string& type, const std::string& name,
 std::string wcet_arguments(const Interface& i, const std::string& what, Wcet wcet,
                            PackageParts& parts) {
   if (wcet == Wcet::Zero) return "";
-  if (!i.wcet_high) parts.report.push_back(what + ": no WCET in the view: 0 ms");
   const auto low = whole_milliseconds(i.wcet_low.value_or(0), what + " WCET", parts);
   const auto high = whole_milliseconds(i.wcet_high.value_or(0), what + " WCET", parts);
   return ", " + std::to_string(low) + ", " + std::to_string(high);
+}
+
+/// The execution time an interface gets: --wcet's, when the view gives its WCET; none else (the
+/// bound would count the time its caller waits in synchronous calls, and 0 would stop time).
+Wcet effective_wcet(const Interface& i, const std::string& what, Wcet wcet, PackageParts& parts) {
+  if (wcet == Wcet::Zero || i.wcet_high) return wcet;
+  parts.report.push_back(what + ": no WCET in the view: it runs in no time");
+  return Wcet::Zero;
 }
 
 std::string deadline_argument(const Interface& i, const std::string& what, PackageParts& parts) {
@@ -55,14 +62,16 @@ void cyclic(const FunctionSignature& f, const SignalInterface& p, Wcet wcet, Pac
     diags.error(p.at, "cyclic interface " + what + " has parameters, which TASTE does not allow");
     return;
   }
-  parts.atom_types.add("TASTE_Cyclic", cyclic_wrapper(use_port_type({}, parts), wcet));
+  wcet = effective_wcet(i, what, wcet, parts);
+  const std::string type = wrapper_type_name("TASTE_Cyclic", wcet);
+  parts.atom_types.add(type, cyclic_wrapper(use_port_type({}, parts), wcet));
   const std::string args =
       std::to_string(whole_milliseconds(i.period.value_or(1000), what + " period", parts)) + ", " +
       deadline_argument(i, what, parts) + ", " +
       std::to_string(whole_milliseconds(i.dispatch_offset.value_or(0), what + " offset", parts)) +
       wcet_arguments(i, what, wcet, parts);
-  parts.components.push_back("    component TASTE_Cyclic " + instance + "(" + args + ")\n");
-  parts.report.push_back(what + ": cyclic, wrapper " + instance + " TASTE_Cyclic(" + args + ")");
+  parts.components.push_back("    component " + type + " " + instance + "(" + args + ")\n");
+  parts.report.push_back(what + ": cyclic, wrapper " + instance + " " + type + "(" + args + ")");
   const std::string sync = use_connector_type({}, 0, parts);
   parts.connectors.push_back(
       connector(sync, instance + "_start", {instance + ".start", f.name + "." + p.name + "_in"}));
@@ -88,7 +97,9 @@ void sporadic(const FunctionSignature& f, const SignalInterface& p, Wcet wcet, P
   }
   const auto types = p.data_types(false);
   const std::string port = use_port_type(types, parts);
-  const std::string type = "TASTE_Sporadic_" + port + "_" + std::to_string(size);
+  wcet = effective_wcet(i, what, wcet, parts);
+  const std::string type =
+      wrapper_type_name("TASTE_Sporadic_" + port + "_" + std::to_string(size), wcet);
   std::vector<BipParameter> parameters;
   for (std::size_t k = 0; k < types.size(); ++k)
     parameters.push_back({"a" + std::to_string(k), types[k]});
@@ -110,15 +121,17 @@ void synchronous(const FunctionSignature& f, const SignalInterface& p, Wcet wcet
                  PackageParts& parts) {
   const Interface& i = *p.source;
   const std::string what = qualified(f, p);
-  parts.atom_types.add("TASTE_Synchronous", synchronous_wrapper(use_port_type({}, parts), wcet));
+  wcet = effective_wcet(i, what, wcet, parts);
+  const std::string type = wrapper_type_name("TASTE_Synchronous", wcet);
+  parts.atom_types.add(type, synchronous_wrapper(use_port_type({}, parts), wcet));
   std::string args = wcet_arguments(i, what, wcet, parts);
   if (!args.empty()) args = args.substr(2);
-  parts.components.push_back("    component TASTE_Synchronous " + f.name + "_" + p.name + "(" +
-                             args + ")\n");
+  parts.components.push_back("    component " + type + " " + f.name + "_" + p.name + "(" + args +
+                             ")\n");
   parts.report.push_back(what +
                          (p.kind == InterfaceKind::Protected ? ": protected" : ": unprotected") +
-                         ", run in its caller's thread, wrapper " + f.name + "_" + p.name +
-                         " TASTE_Synchronous(" + args + ")");
+                         ", run in its caller's thread, wrapper " + f.name + "_" + p.name + " " +
+                         type + "(" + args + ")");
   if (p.kind == InterfaceKind::Unprotected) {
     parts.report.push_back(what + ": unprotected, yet run one at a time with " + f.name +
                            "'s other interfaces (one atom per function)");

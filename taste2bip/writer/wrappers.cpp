@@ -73,6 +73,10 @@ std::string wcet_invariant(Wcet wcet) {
 
 }  // namespace
 
+std::string wrapper_type_name(const std::string& base, Wcet wcet) {
+  return wcet == Wcet::Zero ? base : base + "_Wcet";
+}
+
 std::string port_type(const std::string& name, const std::vector<BipParameter>& parameters) {
   return "  port type " + name + "(" + parameter_list(parameters, true) + ")\n";
 }
@@ -81,7 +85,8 @@ std::string cyclic_wrapper(const std::string& call_port, Wcet wcet) {
   std::ostringstream out;
   out << "  // A cyclic interface: started at `offset`, then every `period` after its previous\n"
          "  // start, and done within `deadline` of each start (times in milliseconds).\n"
-         "  atom type TASTE_Cyclic(int period, int deadline, int offset"
+         "  atom type "
+      << wrapper_type_name("TASTE_Cyclic", wcet) << "(int period, int deadline, int offset"
       << wcet_parameters(wcet)
       << ")\n"
          "    clock t unit millisecond\n"
@@ -176,7 +181,8 @@ std::string synchronous_wrapper(const std::string& call_port, Wcet wcet) {
   std::ostringstream out;
   out << "  // The execution time of a protected or unprotected interface, in its caller's "
          "thread.\n"
-         "  atom type TASTE_Synchronous("
+         "  atom type "
+      << wrapper_type_name("TASTE_Synchronous", wcet) << "("
       << (wcet == Wcet::Zero ? "" : "int wcet_low, int wcet_high")
       << ")\n"
          "    clock t unit millisecond\n"

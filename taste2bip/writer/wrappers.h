@@ -29,10 +29,15 @@ struct BipParameter {
 /// translation refuses longer queues with a located error.
 inline constexpr std::uint32_t kMaxQueueSize = 64;
 
+/// The name of a wrapper type with execution times: `base` with Wcet::Zero, `base_Wcet` with the
+/// others (a package may hold both: an interface without WCET in the view runs in no time).
+std::string wrapper_type_name(const std::string& base, Wcet wcet);
+
 /// `port type NAME(T1 p1, ...)` for the parameters (none: `port type NAME()`).
 std::string port_type(const std::string& name, const std::vector<BipParameter>& parameters);
 
-/// `atom type TASTE_Cyclic(int period, int deadline, int offset)`, times in milliseconds: the
+/// `atom type TASTE_Cyclic(int period, int deadline, int offset)` (wrapper_type_name), times in
+/// milliseconds: the
 /// first `start` at `offset`, then one every `period` after the previous start, each followed by
 /// the function's `done` within `deadline`. Its ports are of type `call_port` (no parameters).
 std::string cyclic_wrapper(const std::string& call_port, Wcet wcet = Wcet::Zero);
