@@ -1,5 +1,7 @@
 #include "taste2bip/names.h"
 
+#include <cctype>
+
 #include "bipc/bipc.h"
 
 namespace smcbip::taste2bip {
@@ -18,6 +20,14 @@ std::string bip_identifier(std::string_view name) {
   for (char c : name) out += is_identifier_char(c) ? c : '_';
   if (out.empty() || (out.front() >= '0' && out.front() <= '9')) out.insert(out.begin(), '_');
   if (bipc::is_keyword(out)) out += '_';
+  return out;
+}
+
+std::string folded_name(std::string_view name) {
+  std::string out;
+  for (char c : name) {
+    out += c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
   return out;
 }
 

@@ -12,4 +12,8 @@ namespace smcbip::taste2bip {
 /// TASTE names may meet (`a-b` and `a_b`); the writer keeps the first and reports the others.
 std::string bip_identifier(std::string_view name);
 
+/// `name` folded for matching TASTE names as SDL and the views write them: case ignored, '-' and
+/// '_' alike (`Base-commands-Motion2D`, `base_commands_motion2d`).
+std::string folded_name(std::string_view name);
+
 }  // namespace smcbip::taste2bip

@@ -9,14 +9,6 @@ namespace smcbip::taste2bip {
 
 namespace {
 
-std::string folded(std::string_view name) {
-  std::string out;
-  for (char c : name) {
-    out += c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return out;
-}
-
 /// A field's name inside a leaf's suffix: always after a variable's name, so only its
 /// characters need mapping (a keyword such as `data` is fine there).
 std::string field_identifier(const std::string& name) {
@@ -137,12 +129,12 @@ std::string leaf_name(std::string_view name, const Leaf& leaf) {
 }
 
 std::optional<asn1::TypeId> find_type_spelled(const asn1::DataView& view, std::string_view name) {
-  const std::string wanted = folded(name);
+  const std::string wanted = folded_name(name);
   std::optional<asn1::TypeId> found;
   for (std::size_t m = 0; m < view.modules.size(); ++m) {
     const auto& types = view.modules[m].types;
     for (std::size_t i = 0; i < types.size(); ++i) {
-      if (folded(types[i].name) != wanted) continue;
+      if (folded_name(types[i].name) != wanted) continue;
       if (found) return std::nullopt;
       found = asn1::TypeId{m, i};
     }

@@ -60,33 +60,39 @@ const std::string* user_behaviour(const Design& design, const FunctionSignature&
   return nullptr;
 }
 
-std::optional<AtomType> function_atom(const Design& design, const FunctionSignature& f,
-                                      bipc::Diagnostics& diags) {
+/// The atoms of a function: the nominal one, and for an SDL function the faulty package's (its
+/// fault signals as fault transitions; the other functions' faulty atoms repeat the nominal
+/// one's declarations).
+struct FunctionAtoms {
+  std::optional<AtomType> nominal, faulty;
+};
+
+FunctionAtoms function_atoms(const Design& design, const FunctionSignature& f,
+                             bipc::Diagnostics& diags) {
+  FunctionAtoms out;
   if (const std::string* text = user_behaviour(design, f)) {
     AtomType given;
     given.name = f.name;
     given.text = *text;
     given.notes.push_back(f.name + ": the atom type given for it");
-    return given;
+    out.nominal = std::move(given);
+    return out;
   }
-  if (!same_name(f.language, "SDL")) return abstract_atom(f);
+  if (!same_name(f.language, "SDL")) {
+    out.nominal = abstract_atom(f);
+    return out;
+  }
   const FoundProcess found = find_process(design.sdl, f.source->name);
   if (found.process == nullptr) {
     diags.error(f.source->at, "SDL function " + f.source->name +
                                   ": no process of that name in the SDL files given");
-    return std::nullopt;
+    return out;
   }
-  return sdl_atom(f, *found.process, found.procedures, design.data, diags);
-}
-
-/// The faulty package's atom of an SDL function (its fault signals as fault transitions), or
-/// nullopt for the other functions, whose faulty atom repeats the nominal one's declarations.
-std::optional<AtomType> faulty_sdl_atom(const Design& design, const FunctionSignature& f,
-                                        bipc::Diagnostics& diags) {
-  if (user_behaviour(design, f) != nullptr || !same_name(f.language, "SDL")) return std::nullopt;
-  const FoundProcess found = find_process(design.sdl, f.source->name);
-  if (found.process == nullptr) return std::nullopt;
-  return sdl_fault_atom(f, *found.process, found.procedures, design.data, diags);
+  out.nominal = sdl_atom(f, *found.process, found.procedures, design.data, diags);
+  if (out.nominal) {
+    out.faulty = sdl_fault_atom(f, *found.process, found.procedures, design.data, diags);
+  }
+  return out;
 }
 
 bool distinct_instances(const std::vector<FunctionSignature>& functions, bipc::Diagnostics& diags) {
@@ -162,13 +168,14 @@ std::optional<Packages> translate(const Design& design, const PackageOptions& op
   PackageParts parts;
   std::vector<AtomType> atoms, faulty;
   for (const FunctionSignature& f : functions) {
-    auto atom = function_atom(design, f, diags);
+    FunctionAtoms made = function_atoms(design, f, diags);
+    std::optional<AtomType>& atom = made.nominal;
     if (!atom) continue;
-    if (auto fault_atom = faulty_sdl_atom(design, f, diags)) faulty.push_back(*fault_atom);
+    if (made.faulty) faulty.push_back(std::move(*made.faulty));
     for (const std::string& t : atom->extern_types) {
       parts.extern_types.add(t, "  extern data type " + t + "\n");
     }
-    for (const std::string& f : atom->extern_functions) parts.extern_types.add(f, "  " + f + "\n");
+    for (const std::string& e : atom->extern_functions) parts.extern_types.add(e, "  " + e + "\n");
     parts.report.push_back(f.source->name + " (" + f.language + "): atom type " + atom->name);
     for (const std::string& note : atom->notes) parts.report.push_back("  " + note);
     atoms.push_back(std::move(*atom));

@@ -14,13 +14,7 @@ namespace detail {
 
 std::string signal_key(const std::string& name) { return bip_identifier(folded(name)); }
 
-std::string folded(const std::string& name) {
-  std::string out;
-  for (char c : name) {
-    out += c == '-' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return out;
-}
+std::string folded(const std::string& name) { return folded_name(name); }
 
 void Outcome::merge(Outcome other) {
   for (Step& s : other.falls) falls.push_back(std::move(s));
