@@ -85,7 +85,9 @@ FunctionAtoms function_atoms(const Design& design, const FunctionSignature& f,
   const FoundProcess found = find_process(design.sdl, f.source->name);
   if (found.process == nullptr) {
     diags.error(f.source->at, "SDL function " + f.source->name +
-                                  ": no process of that name in the SDL files given");
+                                  ": no process of that name in the SDL read (taste2bip reads " +
+                                  f.source->name +
+                                  ".pr, any case, under --sdl or the view's folder)");
     return out;
   }
   out.nominal = sdl_atom(f, *found.process, found.procedures, design.data, diags);

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "bipc/errors.h"
 #include "bipc/input_file.h"
 #include "taste2bip/asn1/taste_basic_types.h"
 #include "taste2bip/sdl/sdl_reader.h"
@@ -80,6 +81,12 @@ std::vector<sdl::SdlFile> read_sdl(const DesignFiles& paths, const InterfaceView
                                    bipc::SourceFiles& files, bipc::Diagnostics& diags) {
   std::vector<std::string> folders = paths.sdl_folders;
   if (folders.empty()) folders.push_back(folder_of(paths.interface_view));
+  for (const std::string& folder : folders) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) {
+      throw InputError("the SDL folder " + folder + " is not a folder", {folder, 0, 0});
+    }
+  }
   std::vector<sdl::SdlFile> out;
   for (const Function& f : view.functions) {
     if (lower(f.language) != "sdl") continue;
