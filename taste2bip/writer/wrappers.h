@@ -37,9 +37,9 @@ std::string wrapper_type_name(const std::string& base, Wcet wcet);
 std::string port_type(const std::string& name, const std::vector<BipParameter>& parameters);
 
 /// `atom type TASTE_Cyclic(int period, int deadline, int offset)` (wrapper_type_name), times in
-/// milliseconds: the
-/// first `start` at `offset`, then one every `period` after the previous start, each followed by
-/// the function's `done` within `deadline`. Its ports are of type `call_port` (no parameters).
+/// milliseconds: the first `start` at `offset`, then one every `period` after the previous start
+/// (later when the function is busy with another of its interfaces), each followed by the
+/// function's `done` within `deadline`. Its ports are of type `call_port` (no parameters).
 std::string cyclic_wrapper(const std::string& call_port, Wcet wcet = Wcet::Zero);
 
 /// `atom type NAME(int miat, int deadline)`: a sporadic interface with these parameters and a

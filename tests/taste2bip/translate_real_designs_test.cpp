@@ -5,10 +5,13 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 
+#include "engines/engines.h"
 #include "taste2bip/translate/package.h"
 #include "taste2bip/translate/read_design.h"
+#include "tests/engines/temp_model.h"
 #include "tests/taste2bip/shared_data.h"
 
 namespace smcbip::taste2bip {
@@ -75,6 +78,37 @@ TEST(TranslateRealDesigns, EachTranslatesOrIsRefusedAtALocatedConstruct) {
   }
   EXPECT_EQ(refused, kRefused.size());
   EXPECT_GE(translated, 25u);
+}
+
+TEST(TranslateRealDesigns, TheWatchdogWithDrawnExecutionTimesNeverStopsTime) {
+  // Its Watchdog serves a cyclic and a sporadic interface: a call that comes while the other one
+  // runs (its execution time drawn in the WCET bounds) must wait, not stop time.
+  const fs::path view =
+      test::shared_data_dir() / "esrocos-mc_watchdog" / "TasteModel" / "InterfaceView.aadl";
+  if (!fs::exists(view)) GTEST_SKIP() << "no ../shared/data/esrocos-mc_watchdog in this clone";
+  bipc::SourceFiles files;
+  bipc::Diagnostics diags;
+  std::vector<std::string> notes;
+  DesignFiles paths;
+  paths.interface_view = view.string();
+  auto design = read_design(paths, files, diags, notes);
+  ASSERT_TRUE(design) << diags.format(files);
+  PackageOptions options;
+  options.wcet = Wcet::Uniform;
+  const auto packages = translate(*design, options, diags);
+  ASSERT_TRUE(packages) << diags.format(files);
+  const auto system = tests::load_model_text(packages->nominal, "Syst()");
+  ASSERT_TRUE(system);
+  engines::SimulateOptions run;
+  run.seed = 1;
+  run.limit = 3000;  // some 5 s of the scenario, past the first time the two calls met
+  engines::Simulator simulator(*system, run, engines::Externs::with_builtins());
+  for (std::uint64_t i = 0; i < 5; ++i) {
+    std::ostringstream trace, output;
+    const engines::RunResult r = simulator.run(i, engines::RunStreams{trace, output});
+    EXPECT_EQ(r.code, engines::kRunOk) << r.message;
+    EXPECT_EQ(r.end, engines::RunEnd::Limit) << "run " << i;
+  }
 }
 
 }  // namespace
