@@ -57,17 +57,22 @@ int translate_design(const Arguments& args) {
   for (const std::string& note : notes) report += note + "\n";
   report += packages->report;
   const std::string& name = args.package.name;
+  std::vector<bipc::NamedText> written{{name + ".bip", packages->nominal},
+                                       {name + "_faulty.bip", packages->faulty},
+                                       {name + "_requirements.bip", packages->requirements},
+                                       {name + "_report.txt", report}};
+  for (const OutputFile& file : packages->files) written.push_back({file.name, file.text});
   std::string error;
-  if (!bipc::write_files_atomically(args.output,
-                                    {{name + ".bip", packages->nominal},
-                                     {name + "_faulty.bip", packages->faulty},
-                                     {name + "_requirements.bip", packages->requirements},
-                                     {name + "_report.txt", report}},
-                                    error)) {
-    throw InputError(error);
-  }
+  if (!bipc::write_files_atomically(args.output, written, error)) throw InputError(error);
   std::cout << report << "wrote " << args.output << "/" << name << ".bip (root Syst()), " << name
-            << "_faulty.bip, " << name << "_requirements.bip, " << name << "_report.txt\n";
+            << "_faulty.bip, " << name << "_requirements.bip, " << name << "_report.txt";
+  if (!packages->files.empty()) {
+    std::cout << " and the " << packages->files.size()
+              << " files of the C/C++ bodies: the model runs compiled (bipc gen " << args.output
+              << "/" << name << ".bip --root 'Syst()' -o DIR, then smcbip simulate|check "
+              << "--compiled DIR)";
+  }
+  std::cout << "\n";
   return exit_codes::kSuccess;
 }
 
@@ -85,6 +90,11 @@ int run(int argc, char** argv) {
   cli::once_per_use(app.add_option("--sdl", args.design.sdl_folders,
                                    "a folder holding <function>.pr files (default: the "
                                    "interface view's folder)"))
+      ->type_name("DIR");
+  cli::once_per_use(app.add_option("--src", args.design.source_folders,
+                                   "a folder holding the bodies of C and C++ functions, "
+                                   "<function>.c, .cc or .cpp (default: the interface view's "
+                                   "folder)"))
       ->type_name("DIR");
   cli::once_per_use(app.add_option("--atom", args.atoms,
                                    "the atom type (BIP) of a function without SDL, instead of "

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "taste2bip/translate/abstract_atom.h"
+#include "taste2bip/translate/c_body.h"
 #include "taste2bip/translate/detail/faulty_package.h"
 #include "taste2bip/translate/detail/package_parts.h"
 #include "taste2bip/translate/sdl_atom.h"
@@ -60,6 +61,13 @@ const std::string* user_behaviour(const Design& design, const FunctionSignature&
   return nullptr;
 }
 
+/// The body the function's atom calls: none when the user gave its atom type.
+const FunctionBody* function_body(const Design& design, const FunctionSignature& f) {
+  const auto it = design.bodies.find(f.source->name);
+  if (it == design.bodies.end() || user_behaviour(design, f) != nullptr) return nullptr;
+  return &it->second;
+}
+
 /// The atoms of a function: the nominal one, and for an SDL function the faulty package's (its
 /// fault signals as fault transitions; the other functions' faulty atoms repeat the nominal
 /// one's declarations).
@@ -76,6 +84,10 @@ FunctionAtoms function_atoms(const Design& design, const FunctionSignature& f,
     given.text = *text;
     given.notes.push_back(f.name + ": the atom type given for it");
     out.nominal = std::move(given);
+    return out;
+  }
+  if (function_body(design, f) != nullptr) {
+    out.nominal = c_body_atom(f, design.data, diags);
     return out;
   }
   if (!same_name(f.language, "SDL")) {
@@ -114,11 +126,12 @@ bool distinct_instances(const std::vector<FunctionSignature>& functions, bipc::D
   return ok;
 }
 
-std::string nominal_text(const PackageOptions& options, const PackageParts& parts) {
+std::string nominal_text(const PackageOptions& options, const PackageParts& parts,
+                         const std::string& annotation) {
   std::string text =
       "// The TASTE design as BIP, written by taste2bip: an atom per function, a\n"
       "// timing wrapper per provided interface, a connector per call.\n";
-  text += "package " + options.name + "\n";
+  text += annotation + "package " + options.name + "\n";
   text += parts.extern_types.text() + parts.port_types.text() + parts.connector_types.text();
   text += parts.atom_types.text();
   text += "  compound type Syst()\n";
@@ -197,8 +210,14 @@ std::optional<Packages> translate(const Design& design, const PackageOptions& op
     parts.atom_types.add(atom.name, atom.text);
     parts.function_components.push_back("    component " + atom.name + " " + atom.name + "()\n");
   }
+  std::vector<std::pair<const FunctionSignature*, const FunctionBody*>> with_bodies;
+  for (const FunctionSignature& f : functions) {
+    if (const FunctionBody* body = function_body(design, f)) with_bodies.emplace_back(&f, body);
+  }
+  BodyFiles bodies = c_body_files(options.name, with_bodies, design.data);
   Packages out;
-  out.nominal = nominal_text(options, parts);
+  out.nominal = nominal_text(options, parts, bodies.annotation);
+  out.files = std::move(bodies.files);
   out.faulty = detail::faulty_package(
       options.name, parts.extern_types.text() + parts.port_types.text(), atoms, faulty);
   out.requirements = detail::requirements_package(options.name);

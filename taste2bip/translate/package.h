@@ -21,6 +21,18 @@
 
 namespace smcbip::taste2bip {
 
+/// A function's C or C++ body as found beside the design (c_body.h).
+struct FunctionBody {
+  std::string path;  // where it was read
+  std::string text;
+};
+
+/// A file written beside the packages.
+struct OutputFile {
+  std::string name;  // relative to the output folder
+  std::string text;
+};
+
 struct Design {
   InterfaceView view;   // as read: nested functions are flattened by translate
   asn1::DataView data;  // resolved
@@ -28,6 +40,9 @@ struct Design {
   /// Atom types written by the user for functions without SDL (function name -> the text of an
   /// `atom type F() ... end` with the ports of signature.h), used instead of an abstract atom.
   std::map<std::string, std::string> behaviours;
+  /// The bodies of C and C++ functions (function name as in the view -> its body): their atoms
+  /// call them (c_body.h); a C or C++ function without one gets an abstract atom.
+  std::map<std::string, FunctionBody> bodies;
   /// The files the locations above index, to name them in the report (null: line:col only).
   const bipc::SourceFiles* files = nullptr;
 };
@@ -40,6 +55,8 @@ struct PackageOptions {
 struct Packages {
   std::string nominal, faulty, requirements;
   std::string report;  // lines: what became what, what was assumed, what was left out
+  /// What the nominal package's `@cpp` names, to write beside it: the bodies and their shim.
+  std::vector<OutputFile> files;
 };
 
 /// Translates `design`. Constructs it does not translate are located errors in `diags`

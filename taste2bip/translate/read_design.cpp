@@ -76,17 +76,24 @@ asn1::DataView read_data(const DesignFiles& paths, bipc::SourceFiles& files,
   return view;
 }
 
-/// The SDL of the design's SDL functions: `<function>.pr` in the folders.
-std::vector<sdl::SdlFile> read_sdl(const DesignFiles& paths, const InterfaceView& view,
-                                   bipc::SourceFiles& files, bipc::Diagnostics& diags) {
-  std::vector<std::string> folders = paths.sdl_folders;
+/// The folders given for a kind of file, or the interface view's folder; each must exist.
+std::vector<std::string> search_folders(const std::vector<std::string>& given,
+                                        const DesignFiles& paths, const std::string& what) {
+  std::vector<std::string> folders = given;
   if (folders.empty()) folders.push_back(folder_of(paths.interface_view));
   for (const std::string& folder : folders) {
     std::error_code ec;
     if (!fs::is_directory(folder, ec)) {
-      throw InputError("the SDL folder " + folder + " is not a folder", {folder, 0, 0});
+      throw InputError("the " + what + " folder " + folder + " is not a folder", {folder, 0, 0});
     }
   }
+  return folders;
+}
+
+/// The SDL of the design's SDL functions: `<function>.pr` in the folders.
+std::vector<sdl::SdlFile> read_sdl(const DesignFiles& paths, const InterfaceView& view,
+                                   bipc::SourceFiles& files, bipc::Diagnostics& diags) {
+  const std::vector<std::string> folders = search_folders(paths.sdl_folders, paths, "SDL");
   std::vector<sdl::SdlFile> out;
   for (const Function& f : view.functions) {
     if (lower(f.language) != "sdl") continue;
@@ -104,6 +111,39 @@ std::vector<sdl::SdlFile> read_sdl(const DesignFiles& paths, const InterfaceView
   return out;
 }
 
+/// The file names a body of `f` may have, lower case; none for a language without bodies here.
+std::vector<std::string> body_names(const Function& f) {
+  const std::string language = lower(f.language), name = lower(f.name);
+  if (language == "c") return {name + ".c"};
+  if (language == "cpp" || language == "c++") return {name + ".cc", name + ".cpp"};
+  return {};
+}
+
+/// The bodies of the design's C and C++ functions found in the folders (the first match in
+/// the folders' order).
+std::map<std::string, FunctionBody> read_bodies(const DesignFiles& paths, const InterfaceView& view,
+                                                std::vector<std::string>& notes) {
+  const std::vector<std::string> folders =
+      search_folders(paths.source_folders, paths, "C/C++ source");
+  std::map<std::string, FunctionBody> out;
+  for (const Function& f : view.functions) {
+    const std::vector<std::string> names = body_names(f);
+    if (names.empty()) continue;
+    for (const std::string& folder : folders) {
+      const auto found = files_under(folder, [&](const fs::path& p) {
+        const std::string file = lower(p.filename().string());
+        return std::find(names.begin(), names.end(), file) != names.end();
+      });
+      if (found.empty()) continue;
+      out[f.name] = {found.front(), bipc::read_input_file(found.front(), "the body of " + f.name,
+                                                          kMaxDesignFileBytes)};
+      notes.push_back("body of " + f.name + ": " + found.front());
+      break;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<Design> read_design(const DesignFiles& paths, bipc::SourceFiles& files,
@@ -114,6 +154,7 @@ std::optional<Design> read_design(const DesignFiles& paths, bipc::SourceFiles& f
   design.view = read_view(paths.interface_view, files, diags);
   design.data = read_data(paths, files, diags, notes);
   design.sdl = read_sdl(paths, design.view, files, diags);
+  design.bodies = read_bodies(paths, design.view, notes);
   for (const auto& [function, path] : paths.behaviours) {
     design.behaviours[function] =
         bipc::read_input_file(path, "the atom type of " + function, kMaxDesignFileBytes);

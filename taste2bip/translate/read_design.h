@@ -21,6 +21,10 @@ struct DesignFiles {
   /// Folders searched (with their subfolders) for `<function>.pr`, the name's case ignored; none:
   /// the interface view's folder.
   std::vector<std::string> sdl_folders;
+  /// Folders searched (with their subfolders) for the bodies of C and C++ functions,
+  /// `<function>.c` (C) or `<function>.cc` / `.cpp` (CPP), the name's case ignored; none: the
+  /// interface view's folder.
+  std::vector<std::string> source_folders;
   /// Function name -> a file holding its atom type (Design::behaviours).
   std::map<std::string, std::string> behaviours;
 };

@@ -3,6 +3,10 @@ list(APPEND TASTE2BIP_SOURCES
   translate/bip_types.cpp
   translate/signature.cpp
   translate/abstract_atom.cpp
+  translate/c_types.cpp
+  translate/c_shim.cpp
+  translate/c_body.cpp
+  translate/c_body_atom.cpp
   translate/package_parts.cpp
   translate/connect.cpp
   translate/faulty_package.cpp
