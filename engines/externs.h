@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -22,6 +23,12 @@ namespace smcbip::engines {
 using bipc::ir::ValueKind;
 
 class RandomStream;
+
+/// What an extern function throws when it cannot go on: the run ends in a model error located
+/// at the call, with this message (the engines catch nothing else an extern function throws).
+struct ExternFault : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 /// What an extern function sees of the run that calls it: the model's output stream (the trace
 /// stream, so prints interleave with engine lines), the string pool of the model, and the run's

@@ -95,8 +95,8 @@ void CodeEvaluator::execute(const bipc::ir::Code& code, const Frame& frame) {
 }
 
 Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& functions,
-                          CallContext& call, Index function, std::size_t count,
-                          const Val* args_end, Index site) {
+                          CallContext& call, Index function, std::size_t count, const Val* args_end,
+                          Index site) {
   const Externs::Function* f = functions.functions[function];
   const std::vector<ValueKind>& kinds = functions.arg_kinds[function];
   if (!f) {
@@ -111,7 +111,11 @@ Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& 
   // Variadic calls see their own argument kinds; the IR declares them per call site.
   call.arg_kinds = kinds;
   if (f->variadic && count > kinds.size()) call.arg_kinds = {};
-  return f->fn(call, args);
+  try {
+    return f->fn(call, args);
+  } catch (const ExternFault& fault) {
+    throw CodeFault{system.functions[function].name + ": " + fault.what(), site};
+  }
 }
 
 inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
@@ -172,7 +176,8 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
       sp[-1] = make_float(static_cast<double>(sp[-1].i));
       return sp;
     case Op::Call: {
-      const Val result = code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp, in.site);
+      const Val result =
+          code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp, in.site);
       sp -= in.arg;
       if (system_.functions[in.index].result) *sp++ = result;
       return sp;

@@ -74,6 +74,29 @@ class Activation {
 
 thread_local Activation* Activation::starting_ = nullptr;
 
+// The bodies' own data (their static variables) exist once in the process: runs made on two
+// threads at once would share them. The thread that starts a run owns the bodies until it
+// ends; a run started on another thread meanwhile is a fault of that run, not a silent mix.
+std::atomic<std::thread::id> bodies_owner{};
+
+struct OwnerRelease {
+  ~OwnerRelease() {
+    std::thread::id me = std::this_thread::get_id();
+    bodies_owner.compare_exchange_strong(me, std::thread::id{});
+  }
+};
+thread_local OwnerRelease owner_release;
+
+void claim_bodies() {
+  static_cast<void>(&owner_release);  // constructed in this thread, released when it ends
+  std::thread::id free{};
+  const std::thread::id me = std::this_thread::get_id();
+  if (bodies_owner.compare_exchange_strong(free, me) || free == me) return;
+  throw smcbip::engines::ExternFault(
+      "the functions' C/C++ bodies hold their data once per process, so their runs cannot be "
+      "made on several threads at once: run with --threads 1");
+}
+
 )";
 
 std::string guard_name(const std::string& file) {
@@ -188,9 +211,10 @@ BodyFiles c_body_files(
       {shim_name + ".cpp",
        std::string("// The bodies of the design's C/C++ functions, run for their atoms.\n") +
            kBanner + "#include \"" + shim_name +
-           ".h\"\n\n#include <ucontext.h>\n\n#include <cstdio>\n#include <cstring>\n"
-           "#include <memory>\n#include <string>\n#include <type_traits>\n\n"
-           "#include \"dataview-uniq.h\"\n" +
+           ".h\"\n\n#include <ucontext.h>\n\n#include <atomic>\n#include <cstdio>\n"
+           "#include <cstring>\n#include <memory>\n#include <string>\n#include <thread>\n"
+           "#include <type_traits>\n\n#include \"engines/externs.h\"\n#include "
+           "\"dataview-uniq.h\"\n" +
            shim.includes + "\nnamespace {\n\n" + kActivation + shim.state + "}  // namespace\n\n" +
            shim.definitions});
   out.annotation = "@cpp(src=\"" + sources + "\", include=\"" + headers + "\")\n";

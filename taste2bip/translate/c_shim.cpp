@@ -189,7 +189,7 @@ FunctionShim function_shim(const FunctionSignature& f, const asn1::DataView& dat
   FunctionShim shim;
   shim.state = "thread_local Activation " + activation(f) + ";\n";
   const std::string ctxt = c_function_name(f) + "_ctxt";
-  std::string startup = "  " + activation(f) + ".reset();\n";
+  std::string startup = "  claim_bodies();\n  " + activation(f) + ".reset();\n";
   if (!f.context.empty()) {
     shim.context = "context_" + c_function_name(f) + " " + ctxt + ";\n";
     startup += context_values(f);
