@@ -14,8 +14,10 @@ struct Config {
   /// CUC time: octets of coarse time (1..4) and of fine time (0..3), CCSDS 301.0-B-4 section 3.2.
   std::uint8_t cuc_coarse_bytes = 4;
   std::uint8_t cuc_fine_bytes = 2;
-  /// Whether each CUC time is preceded by its one-octet P-field (agency epoch, "0b0010").
+  /// Whether each CUC time is preceded by its one-octet P-field, and the time code ID that
+  /// P-field declares: 0b010 agency-defined epoch (the default), 0b001 CCSDS epoch (1958).
   bool cuc_p_field = false;
+  std::uint8_t cuc_time_code = 0b010;
   /// The field "N" that counts repeated items in a request or report (1 or 2 bytes).
   std::uint8_t count_bytes = 1;
   /// ST01 failure code and step ID (enumerated).

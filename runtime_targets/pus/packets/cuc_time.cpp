@@ -11,6 +11,9 @@ Result<Done> validate(const Config& c) {
   if (c.cuc_coarse_bytes < 1 || c.cuc_coarse_bytes > 4) {
     return fail(Reason::BadConfig, "CUC coarse time takes 1 to 4 octets");
   }
+  if (c.cuc_time_code != 0b001 && c.cuc_time_code != 0b010) {
+    return fail(Reason::BadConfig, "CUC time code ID is 0b001 or 0b010");
+  }
   if (c.cuc_fine_bytes > 3) return fail(Reason::BadConfig, "CUC fine time takes 0 to 3 octets");
   if (c.count_bytes < 1 || c.count_bytes > 2) {
     return fail(Reason::BadConfig, "the count field N takes 1 or 2 octets");
@@ -24,7 +27,7 @@ Result<Done> validate(const Config& c) {
 }
 
 std::uint8_t cuc_p_field(const Config& config) {
-  return static_cast<std::uint8_t>(0b010 << 4 | (config.cuc_coarse_bytes - 1) << 2 |
+  return static_cast<std::uint8_t>(config.cuc_time_code << 4 | (config.cuc_coarse_bytes - 1) << 2 |
                                    config.cuc_fine_bytes);
 }
 

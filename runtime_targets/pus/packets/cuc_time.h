@@ -17,9 +17,8 @@ struct CucTime {
   friend bool operator==(const CucTime&, const CucTime&) = default;
 };
 
-/// The P-field of a CUC time with agency-defined epoch and the config's widths:
-/// bit 7 extension 0, bits 6..4 time code ID 0b010, bits 3..2 coarse octets - 1, bits 1..0
-/// fine octets.
+/// The P-field of a CUC time with the config's time code and widths: bit 7 extension 0,
+/// bits 6..4 time code ID, bits 3..2 coarse octets - 1, bits 1..0 fine octets.
 std::uint8_t cuc_p_field(const Config& config);
 
 /// Appends the time (P-field first if the config asks for one).

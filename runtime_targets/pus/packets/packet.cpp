@@ -30,11 +30,13 @@ Result<std::size_t> finish(PrimaryHeader primary, std::size_t total, std::span<s
 }
 
 // The checks common to TC and TM up to the CRC; returns the primary header.
-Result<PrimaryHeader> check_frame(std::span<const std::uint8_t> bytes, std::size_t min_data) {
+Result<PrimaryHeader> check_frame(std::span<const std::uint8_t> bytes, PacketType kind,
+                                  std::size_t min_data) {
   auto primary = decode_primary_header(bytes);
   if (!primary) return primary;
   const PrimaryHeader& p = primary.value();
   if (p.version != 0) return fail(Reason::WrongVersion, "packet version number is not 0", 0);
+  if (p.type != kind) return fail(Reason::WrongPacketType, "packet type bit contradicts kind");
   if (p.packet_length() > bytes.size()) {
     return fail(Reason::LengthMismatch, "length field exceeds the octets given", 4);
   }
@@ -49,6 +51,7 @@ Result<PrimaryHeader> check_frame(std::span<const std::uint8_t> bytes, std::size
   if (crc16(bytes.first(crc_at)) != stored) {
     return fail(Reason::BadCrc, "packet error control does not match", crc_at);
   }
+  if (!p.secondary_header) return fail(Reason::NoSecondaryHeader, "PUS needs the flag set");
   return primary;
 }
 
@@ -86,11 +89,10 @@ Result<std::size_t> encode(const Telemetry& tm, const Config& config, std::span<
 
 Result<Telecommand> decode_tc(std::span<const std::uint8_t> bytes, const Config& config) {
   PUS_TRY(validate(config));
-  auto primary = check_frame(bytes, kTcSecondaryHeaderLength + kCrcLength);
+  auto primary = check_frame(bytes, PacketType::Tc, kTcSecondaryHeaderLength + kCrcLength);
   if (!primary) return primary.error();
   Telecommand tc;
   tc.primary = primary.value();
-  PUS_TRY(check_primary(tc.primary, PacketType::Tc));
   Reader header_in(bytes.subspan(kPrimaryHeaderLength), kPrimaryHeaderLength);
   auto header = decode_tc_secondary_header(header_in);
   if (!header) return header.error();
@@ -110,11 +112,10 @@ Result<Telecommand> decode_tc(std::span<const std::uint8_t> bytes, const Config&
 Result<Telemetry> decode_tm(std::span<const std::uint8_t> bytes, const Config& config) {
   PUS_TRY(validate(config));
   const std::size_t header_length = tm_secondary_header_length(config);
-  auto primary = check_frame(bytes, header_length + kCrcLength);
+  auto primary = check_frame(bytes, PacketType::Tm, header_length + kCrcLength);
   if (!primary) return primary.error();
   Telemetry tm;
   tm.primary = primary.value();
-  PUS_TRY(check_primary(tm.primary, PacketType::Tm));
   Reader header_in(bytes.subspan(kPrimaryHeaderLength), kPrimaryHeaderLength);
   if ((bytes[kPrimaryHeaderLength] >> 4) != kPusVersionC) {
     return fail(Reason::WrongPusVersion, "TM PUS version is not 2", kPrimaryHeaderLength);

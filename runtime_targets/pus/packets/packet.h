@@ -42,11 +42,11 @@ Result<std::size_t> encode(const Telecommand& tc, const Config& config,
 Result<std::size_t> encode(const Telemetry& tm, const Config& config, std::span<std::uint8_t> out);
 
 /// Decodes exactly one telecommand filling `bytes`. Refuses, in this order: TooShort (under
-/// six octets, or a data field too short for the secondary header and CRC), WrongVersion,
-/// LengthMismatch (fewer octets than the length field says), TrailingBytes (more), BadCrc,
-/// WrongPacketType, NoSecondaryHeader, WrongPusVersion, UnknownService, UnknownSubtype, then
-/// what the application data decoder refuses (TooShort, TrailingBytes, BadField,
-/// CapacityExceeded).
+/// six octets), WrongVersion, WrongPacketType, LengthMismatch (fewer octets than the length
+/// field says), TrailingBytes (more), TooShort (a data field too short for the secondary
+/// header and CRC), BadCrc, NoSecondaryHeader, WrongPusVersion, UnknownService,
+/// UnknownSubtype, then what the application data decoder refuses (TooShort, TrailingBytes,
+/// BadField, CapacityExceeded).
 Result<Telecommand> decode_tc(std::span<const std::uint8_t> bytes, const Config& config);
 /// The same for one telemetry packet.
 Result<Telemetry> decode_tm(std::span<const std::uint8_t> bytes, const Config& config);
