@@ -41,11 +41,30 @@ void check_with(std::span<const std::uint8_t> input, const Config& config) {
   if (!again || !(again.value() == packet.value())) mismatch("re-decoding differs");
 }
 
+// The input with its length field and CRC made consistent, so that mutations reach the
+// secondary headers and the application data instead of stopping at the CRC.
+std::span<const std::uint8_t> with_consistent_frame(std::span<const std::uint8_t> input) {
+  static std::array<std::uint8_t, 70000> fixed;
+  if (input.size() < kPrimaryHeaderLength + kCrcLength || input.size() - 7 > 0xFFFF) return {};
+  std::copy(input.begin(), input.end(), fixed.begin());
+  const std::size_t n = input.size();
+  fixed[4] = static_cast<std::uint8_t>((n - 7) >> 8);
+  fixed[5] = static_cast<std::uint8_t>(n - 7);
+  const std::uint16_t crc = crc16(std::span<const std::uint8_t>(fixed.data(), n - 2));
+  fixed[n - 2] = static_cast<std::uint8_t>(crc >> 8);
+  fixed[n - 1] = static_cast<std::uint8_t>(crc);
+  return {fixed.data(), n};
+}
+
 }  // namespace
 
 void check_decoder(const std::uint8_t* data, std::size_t size) {
   const std::span<const std::uint8_t> input(data, size);
-  for (const Config& config : fuzzed_configs()) check_with(input, config);
+  const std::span<const std::uint8_t> consistent = with_consistent_frame(input);
+  for (const Config& config : fuzzed_configs()) {
+    check_with(input, config);
+    if (!consistent.empty()) check_with(consistent, config);
+  }
 }
 
 }  // namespace smcbip::pus::fuzz
