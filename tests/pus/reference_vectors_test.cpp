@@ -158,9 +158,9 @@ TEST(PusReferenceVectors, CucWithPField) {
   config.cuc_time_code = 0b001;
   config.cuc_fine_bytes = 0;
   std::array<std::uint8_t, 8> out{};
-  detail::Writer writer(out);
-  ASSERT_TRUE(encode_cuc(CucTime{0x20102030, 0}, config, writer).ok());
-  EXPECT_EQ(writer.written(), 5u);
+  auto written = encode_cuc(CucTime{0x20102030, 0}, config, out);
+  ASSERT_TRUE(written.ok());
+  EXPECT_EQ(written.value(), 5u);
   EXPECT_EQ(out[0], 0x1C);
   EXPECT_EQ(out[1], 0x20);
   EXPECT_EQ(out[2], 0x10);
@@ -168,9 +168,9 @@ TEST(PusReferenceVectors, CucWithPField) {
   EXPECT_EQ(out[4], 0x30);
 
   config.cuc_fine_bytes = 2;
-  detail::Writer medium(out);
-  ASSERT_TRUE(encode_cuc(CucTime{0x30303030, 30000}, config, medium).ok());
-  EXPECT_EQ(medium.written(), 7u);
+  written = encode_cuc(CucTime{0x30303030, 30000}, config, out);
+  ASSERT_TRUE(written.ok());
+  EXPECT_EQ(written.value(), 7u);
   EXPECT_EQ(out[0] >> 4 & 0x7, 0b001);
   EXPECT_EQ(out[0] >> 2 & 0x3, 0b11);
   EXPECT_EQ(out[0] & 0x3, 2);
@@ -178,10 +178,11 @@ TEST(PusReferenceVectors, CucWithPField) {
   EXPECT_EQ(out[4], 0x30);
   EXPECT_EQ(out[5] << 8 | out[6], 30000);
 
-  detail::Reader reader(std::span<const std::uint8_t>(out.data(), 7));
-  auto back = decode_cuc(config, reader);
+  auto back = decode_cuc(config, std::span<const std::uint8_t>(out.data(), 7));
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(back.value(), (CucTime{0x30303030, 30000}));
+  EXPECT_EQ(decode_cuc(config, std::span<const std::uint8_t>(out.data(), 6)).reason(),
+            Reason::TooShort);
 }
 
 }  // namespace

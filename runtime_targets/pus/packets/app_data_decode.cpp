@@ -37,7 +37,7 @@ Result<Message> read_verification(const MessageType& t, const Config& c, Reader&
     auto code = in.uint(c.failure_code_bytes);
     if (!code) return code.error();
     v.failure_code = code.value();
-    PUS_TRY(read_bytes_to_end(v.failure_data, in));
+    SMCBIP_PUS_TRY(read_bytes_to_end(v.failure_data, in));
   }
   return Message{v};
 }
@@ -75,7 +75,7 @@ Result<Message> read_event(const Config& c, Reader& in) {
   auto id = in.uint(c.event_id_bytes);
   if (!id) return id.error();
   event.event_id = id.value();
-  PUS_TRY(read_bytes_to_end(event.aux_data, in));
+  SMCBIP_PUS_TRY(read_bytes_to_end(event.aux_data, in));
   return Message{event};
 }
 
@@ -131,7 +131,7 @@ Result<Message> read_activities(const MessageType& t, const Config& c, Reader& i
   Activities activities;
   for (std::size_t i = 0; i < count.value(); ++i) {
     Activity item;
-    PUS_TRY(read_activity(t, c, in, item));
+    SMCBIP_PUS_TRY(read_activity(t, c, in, item));
     activities.items.push_back(item);
   }
   return Message{activities};
@@ -154,12 +154,12 @@ Result<Message> read_alternative(const MessageType& t, const Config& c, Reader& 
       auto id = in.uint(c.function_id_bytes);
       if (!id) return id.error();
       call.function_id = id.value();
-      PUS_TRY(read_id_values(call.arguments, c.argument_id_bytes, c, in));
+      SMCBIP_PUS_TRY(read_id_values(call.arguments, c.argument_id_bytes, c, in));
       return Message{call};
     }
     case Shape::ParameterValues: {
       ParameterValues values;
-      PUS_TRY(read_id_values(values.values, c.parameter_id_bytes, c, in));
+      SMCBIP_PUS_TRY(read_id_values(values.values, c.parameter_id_bytes, c, in));
       return Message{values};
     }
     case Shape::TimeReportRate: {

@@ -32,8 +32,8 @@ std::uint8_t cuc_p_field(const Config& config) {
 }
 
 Result<Done> encode_cuc(const CucTime& time, const Config& config, detail::Writer& out) {
-  if (config.cuc_p_field) PUS_TRY(out.uint(cuc_p_field(config), 1));
-  PUS_TRY(out.uint(time.coarse, config.cuc_coarse_bytes));
+  if (config.cuc_p_field) SMCBIP_PUS_TRY(out.uint(cuc_p_field(config), 1));
+  SMCBIP_PUS_TRY(out.uint(time.coarse, config.cuc_coarse_bytes));
   if (config.cuc_fine_bytes == 0) {
     if (time.fine != 0) return fail(Reason::BadField, "fine time without fine octets");
     return Done{};
@@ -60,6 +60,20 @@ Result<CucTime> decode_cuc(const Config& config, detail::Reader& in) {
     time.fine = static_cast<std::uint32_t>(fine.value());
   }
   return time;
+}
+
+Result<std::size_t> encode_cuc(const CucTime& time, const Config& config,
+                               std::span<std::uint8_t> out) {
+  SMCBIP_PUS_TRY(validate(config));
+  detail::Writer writer(out);
+  SMCBIP_PUS_TRY(encode_cuc(time, config, writer));
+  return writer.written();
+}
+
+Result<CucTime> decode_cuc(const Config& config, std::span<const std::uint8_t> bytes) {
+  SMCBIP_PUS_TRY(validate(config));
+  detail::Reader reader(bytes);
+  return decode_cuc(config, reader);
 }
 
 }  // namespace smcbip::pus

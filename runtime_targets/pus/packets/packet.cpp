@@ -22,7 +22,7 @@ Result<std::size_t> finish(PrimaryHeader primary, std::size_t total, std::span<s
   if (total - 7 > 0xFFFF) return fail(Reason::CapacityExceeded, "packet over 65542 octets");
   if (out.size() < total) return fail(Reason::BufferTooSmall, "output full", out.size());
   primary.data_length = static_cast<std::uint16_t>(total - 7);
-  PUS_TRY(encode_primary_header(primary, out));
+  SMCBIP_PUS_TRY(encode_primary_header(primary, out));
   const std::uint16_t crc = crc16(out.first(total - kCrcLength));
   out[total - 2] = static_cast<std::uint8_t>(crc >> 8);
   out[total - 1] = static_cast<std::uint8_t>(crc);
@@ -64,31 +64,31 @@ Reader app_data_reader(std::span<const std::uint8_t> bytes, std::size_t header_e
 
 Result<std::size_t> encode(const Telecommand& tc, const Config& config,
                            std::span<std::uint8_t> out) {
-  PUS_TRY(validate(config));
-  PUS_TRY(check_primary(tc.primary, PacketType::Tc));
+  SMCBIP_PUS_TRY(validate(config));
+  SMCBIP_PUS_TRY(check_primary(tc.primary, PacketType::Tc));
   auto type = message_type_of(tc);
   if (!type) return type.error();
   if (out.size() < kPrimaryHeaderLength) return fail(Reason::BufferTooSmall, "output full");
   Writer body(out.subspan(kPrimaryHeaderLength));
-  PUS_TRY(encode_tc_secondary_header(tc.header, body));
-  PUS_TRY(encode_app_data(*type.value(), tc.data, config, body));
+  SMCBIP_PUS_TRY(encode_tc_secondary_header(tc.header, body));
+  SMCBIP_PUS_TRY(encode_app_data(*type.value(), tc.data, config, body));
   return finish(tc.primary, kPrimaryHeaderLength + body.written() + kCrcLength, out);
 }
 
 Result<std::size_t> encode(const Telemetry& tm, const Config& config, std::span<std::uint8_t> out) {
-  PUS_TRY(validate(config));
-  PUS_TRY(check_primary(tm.primary, PacketType::Tm));
+  SMCBIP_PUS_TRY(validate(config));
+  SMCBIP_PUS_TRY(check_primary(tm.primary, PacketType::Tm));
   auto type = message_type_of(tm);
   if (!type) return type.error();
   if (out.size() < kPrimaryHeaderLength) return fail(Reason::BufferTooSmall, "output full");
   Writer body(out.subspan(kPrimaryHeaderLength));
-  PUS_TRY(encode_tm_secondary_header(tm.header, config, body));
-  PUS_TRY(encode_app_data(*type.value(), tm.data, config, body));
+  SMCBIP_PUS_TRY(encode_tm_secondary_header(tm.header, config, body));
+  SMCBIP_PUS_TRY(encode_app_data(*type.value(), tm.data, config, body));
   return finish(tm.primary, kPrimaryHeaderLength + body.written() + kCrcLength, out);
 }
 
 Result<Telecommand> decode_tc(std::span<const std::uint8_t> bytes, const Config& config) {
-  PUS_TRY(validate(config));
+  SMCBIP_PUS_TRY(validate(config));
   auto primary = check_frame(bytes, PacketType::Tc, kTcSecondaryHeaderLength + kCrcLength);
   if (!primary) return primary.error();
   Telecommand tc;
@@ -110,7 +110,7 @@ Result<Telecommand> decode_tc(std::span<const std::uint8_t> bytes, const Config&
 }
 
 Result<Telemetry> decode_tm(std::span<const std::uint8_t> bytes, const Config& config) {
-  PUS_TRY(validate(config));
+  SMCBIP_PUS_TRY(validate(config));
   const std::size_t header_length = tm_secondary_header_length(config);
   auto primary = check_frame(bytes, PacketType::Tm, header_length + kCrcLength);
   if (!primary) return primary.error();

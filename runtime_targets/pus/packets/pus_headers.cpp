@@ -14,19 +14,19 @@ Result<Done> write_nibbles(std::uint8_t high, std::uint8_t low, detail::Writer& 
 std::size_t tm_secondary_header_length(const Config& config) { return 7 + cuc_length(config); }
 
 Result<Done> encode_tc_secondary_header(const TcSecondaryHeader& h, detail::Writer& out) {
-  PUS_TRY(write_nibbles(h.pus_version, h.ack_flags, out));
-  PUS_TRY(out.uint(h.service, 1));
-  PUS_TRY(out.uint(h.subtype, 1));
+  SMCBIP_PUS_TRY(write_nibbles(h.pus_version, h.ack_flags, out));
+  SMCBIP_PUS_TRY(out.uint(h.service, 1));
+  SMCBIP_PUS_TRY(out.uint(h.subtype, 1));
   return out.uint(h.source_id, 2);
 }
 
 Result<Done> encode_tm_secondary_header(const TmSecondaryHeader& h, const Config& config,
                                         detail::Writer& out) {
-  PUS_TRY(write_nibbles(h.pus_version, h.time_reference_status, out));
-  PUS_TRY(out.uint(h.service, 1));
-  PUS_TRY(out.uint(h.subtype, 1));
-  PUS_TRY(out.uint(h.message_type_counter, 2));
-  PUS_TRY(out.uint(h.destination_id, 2));
+  SMCBIP_PUS_TRY(write_nibbles(h.pus_version, h.time_reference_status, out));
+  SMCBIP_PUS_TRY(out.uint(h.service, 1));
+  SMCBIP_PUS_TRY(out.uint(h.subtype, 1));
+  SMCBIP_PUS_TRY(out.uint(h.message_type_counter, 2));
+  SMCBIP_PUS_TRY(out.uint(h.destination_id, 2));
   return encode_cuc(h.time, config, out);
 }
 

@@ -85,7 +85,7 @@ class Writer {
 }  // namespace smcbip::pus::detail
 
 /// Returns the error of a Result expression from the enclosing function.
-#define PUS_TRY(expr)                                          \
+#define SMCBIP_PUS_TRY(expr)                                   \
   do {                                                         \
     auto pus_try_result_ = (expr);                             \
     if (!pus_try_result_.ok()) return pus_try_result_.error(); \
