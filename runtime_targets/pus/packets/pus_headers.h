@@ -47,10 +47,12 @@ struct TmSecondaryHeader {
 /// TM secondary header length under a config: 7 octets plus the time.
 std::size_t tm_secondary_header_length(const Config& config);
 
+/// Appends the five octets of a TC secondary header; BadField if a 4-bit field exceeds 15.
 Result<Done> encode_tc_secondary_header(const TcSecondaryHeader& header, detail::Writer& out);
+/// Appends a TM secondary header and its time; BadField if a field exceeds its width.
 Result<Done> encode_tm_secondary_header(const TmSecondaryHeader& header, const Config& config,
                                         detail::Writer& out);
-/// Reads the fields; the PUS version is checked by the packet decoder.
+/// Read the fields (TooShort if the octets run out); the packet decoder checks the version.
 Result<TcSecondaryHeader> decode_tc_secondary_header(detail::Reader& in);
 Result<TmSecondaryHeader> decode_tm_secondary_header(const Config& config, detail::Reader& in);
 
