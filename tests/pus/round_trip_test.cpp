@@ -116,6 +116,18 @@ TEST(PusRoundTrip, EncoderRefusesFieldsOverTheirWidth) {
   tc.header.subtype = 2;  // [17,2] is a TM
   EXPECT_EQ(encode(tc, Config{}, out).reason(), Reason::UnknownSubtype);
   tc.header.subtype = 1;
+  tc.header.pus_version = 1;
+  EXPECT_EQ(encode(tc, Config{}, out).reason(), Reason::WrongPusVersion);
+  tc.header.pus_version = kPusVersionC;
+  tc.primary.version = 1;
+  EXPECT_EQ(encode(tc, Config{}, out).reason(), Reason::WrongVersion);
+  tc.primary.version = 0;
+  tc.primary.type = PacketType::Tm;
+  EXPECT_EQ(encode(tc, Config{}, out).reason(), Reason::WrongPacketType);
+  tc.primary.type = PacketType::Tc;
+  tc.primary.secondary_header = false;
+  EXPECT_EQ(encode(tc, Config{}, out).reason(), Reason::NoSecondaryHeader);
+  tc.primary.secondary_header = true;
   EXPECT_EQ(encode(tc, Config{}, std::span<std::uint8_t>(out.data(), 12)).reason(),
             Reason::BufferTooSmall);
   Config bad;

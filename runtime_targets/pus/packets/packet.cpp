@@ -10,8 +10,11 @@ namespace {
 using detail::Reader;
 using detail::Writer;
 
-// The primary header as encoding writes it, or BadField when it contradicts the packet kind.
-Result<Done> check_primary(const PrimaryHeader& p, PacketType kind) {
+// Refuses to encode what the decoder would refuse: a version other than 0 or PUS-C, a type
+// bit contradicting the packet kind, a clear secondary header flag.
+Result<Done> check_primary(const PrimaryHeader& p, PacketType kind, std::uint8_t pus_version) {
+  if (p.version != 0) return fail(Reason::WrongVersion, "packet version number is not 0");
+  if (pus_version != kPusVersionC) return fail(Reason::WrongPusVersion, "PUS version is not 2");
   if (p.type != kind) return fail(Reason::WrongPacketType, "packet type bit contradicts kind");
   if (!p.secondary_header) return fail(Reason::NoSecondaryHeader, "PUS needs the flag set");
   return Done{};
@@ -65,7 +68,7 @@ Reader app_data_reader(std::span<const std::uint8_t> bytes, std::size_t header_e
 Result<std::size_t> encode(const Telecommand& tc, const Config& config,
                            std::span<std::uint8_t> out) {
   SMCBIP_PUS_TRY(validate(config));
-  SMCBIP_PUS_TRY(check_primary(tc.primary, PacketType::Tc));
+  SMCBIP_PUS_TRY(check_primary(tc.primary, PacketType::Tc, tc.header.pus_version));
   auto type = message_type_of(tc);
   if (!type) return type.error();
   if (out.size() < kPrimaryHeaderLength) return fail(Reason::BufferTooSmall, "output full");
@@ -77,7 +80,7 @@ Result<std::size_t> encode(const Telecommand& tc, const Config& config,
 
 Result<std::size_t> encode(const Telemetry& tm, const Config& config, std::span<std::uint8_t> out) {
   SMCBIP_PUS_TRY(validate(config));
-  SMCBIP_PUS_TRY(check_primary(tm.primary, PacketType::Tm));
+  SMCBIP_PUS_TRY(check_primary(tm.primary, PacketType::Tm, tm.header.pus_version));
   auto type = message_type_of(tm);
   if (!type) return type.error();
   if (out.size() < kPrimaryHeaderLength) return fail(Reason::BufferTooSmall, "output full");

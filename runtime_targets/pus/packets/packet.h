@@ -35,8 +35,9 @@ struct Telemetry {
 using Packet = std::variant<Telecommand, Telemetry>;
 
 /// Encodes the packet into `out` with its data length and CRC; returns the packet's length.
-/// Refuses (BadField) a header that does not match the kind of packet or a field over its width,
-/// an unsupported message type (UnknownService/UnknownSubtype), a too small `out`.
+/// Refuses what the decoder would refuse (WrongVersion, WrongPusVersion, WrongPacketType,
+/// NoSecondaryHeader, UnknownService, UnknownSubtype), a field over its width (BadField) and
+/// a too small `out` (BufferTooSmall).
 Result<std::size_t> encode(const Telecommand& tc, const Config& config,
                            std::span<std::uint8_t> out);
 Result<std::size_t> encode(const Telemetry& tm, const Config& config, std::span<std::uint8_t> out);
