@@ -30,7 +30,10 @@ std::array<Config, 2> fuzzed_configs() {
 
 void check_with(std::span<const std::uint8_t> input, const Config& config) {
   auto packet = decode(input, config);
-  if (!packet) return;
+  if (!packet) {
+    if (packet.error().offset > input.size()) mismatch("a refusal points past the input");
+    return;
+  }
   static std::array<std::uint8_t, 70000> out;
   auto length = std::visit([&](const auto& p) { return encode(p, config, out); }, packet.value());
   if (!length) mismatch("a decoded packet does not encode");
