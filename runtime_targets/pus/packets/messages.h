@@ -67,7 +67,8 @@ struct IdValue {
   friend bool operator==(const IdValue&, const IdValue&) = default;
 };
 
-/// [8,1] perform a function: function ID, N, then N (argument ID, argument value).
+/// [8,1] perform a function: function ID (a fixed-length field, as a big-endian integer), N,
+/// then N (argument ID, argument value).
 struct FunctionCall {
   std::uint64_t function_id = 0;
   FixedVector<IdValue, kMaxItems> arguments;
@@ -87,7 +88,8 @@ struct TimeReportRate {
   friend bool operator==(const TimeReportRate&, const TimeReportRate&) = default;
 };
 
-/// [9,2] CUC time report: the exponential rate value, then the on-board time.
+/// [9,2] CUC time report: the exponential rate value, then the on-board time (the optional
+/// time reference status is left to the TM secondary header).
 struct TimeReport {
   std::uint8_t rate_exponent = 0;
   CucTime time{};
