@@ -55,7 +55,7 @@ test-slow: build
 # The fuzzers, each with its seeds and dictionary. Seeds are files of the tree and what
 # tests/fuzz_seeds.sh makes of the bundled models (IR encodings, traces of short runs) in
 # build-fuzz/seeds; new inputs go to build-fuzz/corpus/<target>, never into the tree.
-FUZZ_TARGETS := bipc property trace ir cdf asn1 aadl xml sdl sdlatom
+FUZZ_TARGETS := bipc property trace ir cdf asn1 aadl xml sdl sdlatom pus
 FUZZ_SEEDS_bipc := tests/bipc/golden/valid models
 FUZZ_SEEDS_property := build-fuzz/seeds/properties
 FUZZ_SEEDS_trace := tests/smc/golden/traces build-fuzz/seeds/traces
@@ -66,6 +66,7 @@ FUZZ_SEEDS_aadl := tests/taste2bip/fuzz/seeds/aadl
 FUZZ_SEEDS_xml := tests/taste2bip/fuzz/seeds/xml
 FUZZ_SEEDS_sdl := tests/taste2bip/fuzz/seeds/sdl
 FUZZ_SEEDS_sdlatom := tests/taste2bip/fuzz/seeds/sdlatom
+FUZZ_SEEDS_pus := tests/pus/fuzz/seeds/pus
 FUZZ_DICT_bipc := tests/bipc/fuzz/bip.dict
 FUZZ_DICT_property := tests/monitors/fuzz/property.dict
 FUZZ_DICT_trace := tests/monitors/fuzz/trace.dict
@@ -76,9 +77,10 @@ FUZZ_DICT_aadl := tests/taste2bip/fuzz/aadl.dict
 FUZZ_DICT_xml := tests/taste2bip/fuzz/xml.dict
 FUZZ_DICT_sdl := tests/taste2bip/fuzz/sdl.dict
 FUZZ_DICT_sdlatom := tests/taste2bip/fuzz/sdl.dict
-# The smoke run of `make test`: under three minutes in all, 40 s for the front end, 20 s for
-# each other reader of models, properties and traces, 10 s for each reader of TASTE designs and
-# for the SDL translation.
+FUZZ_DICT_pus := tests/pus/fuzz/pus.dict
+# The smoke run of `make test`: three minutes in all, 40 s for the front end, 20 s for each
+# other reader of models, properties and traces, 10 s for each reader of TASTE designs, for the
+# SDL translation and for the PUS packet decoder.
 FUZZ_SMOKE_SECONDS_bipc := 40
 FUZZ_SMOKE_SECONDS_property := 20
 FUZZ_SMOKE_SECONDS_trace := 20
@@ -89,6 +91,7 @@ FUZZ_SMOKE_SECONDS_aadl := 10
 FUZZ_SMOKE_SECONDS_xml := 10
 FUZZ_SMOKE_SECONDS_sdl := 10
 FUZZ_SMOKE_SECONDS_sdlatom := 10
+FUZZ_SMOKE_SECONDS_pus := 10
 
 # $(call fuzz_run,TARGET,SECONDS): one fuzzer for SECONDS from its corpus and seeds.
 define fuzz_run
