@@ -79,10 +79,16 @@ bool Translator::element_values(const Ref& seq_ref, const sdl::Expr& sequence,
 
 bool Translator::unrolled(const sdl::ForLoop& loop, const std::vector<Binding>& values, Step& step,
                           Chain& chain, Outcome& out, bool& ended) {
-  for (const Binding& value : values) {
-    scopes_.push_back({{folded(loop.variable), value}});
+  const std::string outer_key = chain.key;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // Each iteration's labels are places of its own: a label met again in the next iteration
+    // must not lead back into this one.
+    chain.key = outer_key + "/for" + std::to_string(loop.at.line) + ":" +
+                std::to_string(loop.at.column) + "#" + std::to_string(i);
+    scopes_.push_back({{folded(loop.variable), values[i]}});
     Outcome o = actions(loop.body.actions, 0, std::move(step), chain);
     scopes_.pop_back();
+    chain.key = outer_key;
     for (Step& r : o.returns) out.returns.push_back(std::move(r));
     std::optional<Step> next = join_falls(std::move(o.falls), chain);
     if (!next) {

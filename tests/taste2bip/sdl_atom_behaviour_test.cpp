@@ -151,6 +151,27 @@ endprocess F;)");
   EXPECT_EQ(reports(r), (std::vector<double>{2, 1, 0, 0}));
 }
 
+TEST(SdlAtomBehaviour, ALabelInAnUnrolledLoopIsOnePlacePerIteration) {
+  // Each iteration passes the label once: the second must not lead back into the first.
+  const Translated t = translate_process(go_report(), R"(process F;
+  dcl n T_Int;
+  start;
+    nextstate Idle;
+  state Idle;
+    input go(n);
+      for i in range(3):
+        here:
+        task n := n + 1;
+        output report(n);
+      endfor;
+      nextstate Idle;
+  endstate;
+endprocess F;)");
+  ASSERT_TRUE(t.atom) << t.errors;
+  const RunRecord r = run_process(t, {{0, "go", {"10"}}});
+  EXPECT_EQ(reports(r), (std::vector<double>{11, 12, 13}));
+}
+
 TEST(SdlAtomBehaviour, FloatingLabelIsReachedByJoin) {
   const Translated t = translate_process(go_report(), R"(process F;
   dcl n T_Int;
