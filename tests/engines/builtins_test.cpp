@@ -101,5 +101,42 @@ end
   EXPECT_EQ(output.str(), "2\n4\n8\n");
 }
 
+TEST(SimulatorExterns, AnExternFaultEndsTheRunInAModelErrorAtTheCall) {
+  const auto system = tests::load_model_text(R"(package p
+  extern function int twice(int)
+  port type Port()
+  atom type A()
+    data int x = 1
+    export port Port go()
+    place S
+    initial to S
+    on go from S to S do { x = twice(x); }
+  end
+  connector type Solo(Port p)
+    define p
+  end
+  compound type Top()
+    component A a()
+    connector Solo c(a.go)
+  end
+end
+)",
+                                             "Top()");
+  ASSERT_TRUE(system);
+  Externs externs = Externs::with_builtins();
+  externs.add("twice", [](std::int64_t x) -> std::int64_t {
+    if (x >= 4) throw ExternFault("too large to double");
+    return 2 * x;
+  });
+  SimulateOptions options;
+  options.seed = 1;
+  options.limit = 10;
+  Simulator simulator(*system, options, externs);
+  std::ostringstream trace, output;
+  const RunResult result = simulator.run(0, RunStreams{trace, output});
+  EXPECT_EQ(result.code, kInputError) << result.message;
+  EXPECT_NE(result.message.find("twice: too large to double"), std::string::npos) << result.message;
+}
+
 }  // namespace
 }  // namespace smcbip::engines
