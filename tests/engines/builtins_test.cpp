@@ -62,14 +62,9 @@ TEST(BuiltinPrintf, WhatPrintsNoValueIsPrintedAsWritten) {
 namespace smcbip::engines {
 namespace {
 
-Externs with_twice() {
-  Externs externs = Externs::with_builtins();
-  externs.add("twice", [](std::int64_t x) { return 2 * x; });
-  return externs;
-}
-
-TEST(SimulatorExterns, ARegistryThatDoesNotOutliveTheSimulatorIsFine) {
-  const auto system = tests::load_model_text(R"(package p
+/// An atom that doubles its data through the extern function `twice` at each step and prints it.
+auto doubling_model() {
+  return tests::load_model_text(R"(package p
   extern function int twice(int)
   extern function printf(string, int)
   port type Port()
@@ -89,7 +84,17 @@ TEST(SimulatorExterns, ARegistryThatDoesNotOutliveTheSimulatorIsFine) {
   end
 end
 )",
-                                             "Top()");
+                                "Top()");
+}
+
+Externs with_twice() {
+  Externs externs = Externs::with_builtins();
+  externs.add("twice", [](std::int64_t x) { return 2 * x; });
+  return externs;
+}
+
+TEST(SimulatorExterns, ARegistryThatDoesNotOutliveTheSimulatorIsFine) {
+  const auto system = doubling_model();
   ASSERT_TRUE(system);
   SimulateOptions options;
   options.seed = 1;
@@ -102,26 +107,7 @@ end
 }
 
 TEST(SimulatorExterns, AnExternFaultEndsTheRunInAModelErrorAtTheCall) {
-  const auto system = tests::load_model_text(R"(package p
-  extern function int twice(int)
-  port type Port()
-  atom type A()
-    data int x = 1
-    export port Port go()
-    place S
-    initial to S
-    on go from S to S do { x = twice(x); }
-  end
-  connector type Solo(Port p)
-    define p
-  end
-  compound type Top()
-    component A a()
-    connector Solo c(a.go)
-  end
-end
-)",
-                                             "Top()");
+  const auto system = doubling_model();
   ASSERT_TRUE(system);
   Externs externs = Externs::with_builtins();
   externs.add("twice", [](std::int64_t x) -> std::int64_t {
@@ -136,6 +122,7 @@ end
   const RunResult result = simulator.run(0, RunStreams{trace, output});
   EXPECT_EQ(result.code, kInputError) << result.message;
   EXPECT_NE(result.message.find("twice: too large to double"), std::string::npos) << result.message;
+  EXPECT_EQ(output.str(), "2\n4\n");  // the third step calls twice(4)
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "taste2bip/translate/c_types.h"
 #include "taste2bip/translate/package.h"
+#include "tests/taste2bip/view_builders.h"
 
 namespace smcbip::taste2bip {
 namespace {
@@ -94,23 +95,8 @@ TEST(CBodyTypes, EachLeafReachesItsCPiece) {
             "tag_a=.tag.u.a");
 }
 
-Interface interface(const std::string& name, InterfaceKind kind,
-                    std::vector<Parameter> parameters = {}) {
-  Interface i;
-  i.name = name;
-  i.kind = kind;
-  i.parameters = std::move(parameters);
-  return i;
-}
-
-Parameter parameter(Parameter::Direction direction, const std::string& name,
-                    const std::string& type) {
-  Parameter p;
-  p.direction = direction;
-  p.name = name;
-  p.type = type;
-  return p;
-}
+using test::interface;
+using test::parameter;
 
 /// Caller (C, body given) has a cyclic `tick` that calls Callee's protected `get(in x, out y)`
 /// and sporadic `put(v)`; Callee has a body too. `put` carries a value of `put_type`.

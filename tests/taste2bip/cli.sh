@@ -31,6 +31,7 @@ expect 2 "is not a BIP identifier" -- "$view" -o "$work/a" --package 'my-package
 expect 2 "no-such-view.xml" -- "$work/no-such-view.xml" -o "$work/a"
 expect 2 "no-such.asn" -- "$view" --dataview "$work/no-such.asn" -o "$work/a"
 expect 2 "is not a folder" -- "$view" --sdl "$work/no-such-folder" -o "$work/a"
+expect 2 "the C/C++ source folder" -- "$view" --src "$work/no-such-folder" -o "$work/a"
 [[ -e $work/a ]] && { echo "FAIL: a refused run wrote $work/a"; failures=$((failures + 1)); }
 
 # A type the data view lacks: located at the parameter, nothing written.

@@ -10,6 +10,7 @@
 #include "taste2bip/translate/bip_types.h"
 #include "taste2bip/translate/package.h"
 #include "taste2bip/translate/signature.h"
+#include "tests/taste2bip/view_builders.h"
 
 namespace smcbip::taste2bip {
 namespace {
@@ -95,24 +96,8 @@ TEST(TranslatePortTypes, EqualTypeListsShareOnePortType) {
   EXPECT_NE(port_type_name({"int", "int"}), port_type_name({"int"}));
 }
 
-/// An interface of `kind` with these parameters (the view's other attributes unset).
-Interface interface(const std::string& name, InterfaceKind kind,
-                    std::vector<Parameter> parameters = {}) {
-  Interface i;
-  i.name = name;
-  i.kind = kind;
-  i.parameters = std::move(parameters);
-  return i;
-}
-
-Parameter parameter(Parameter::Direction direction, const std::string& name,
-                    const std::string& type) {
-  Parameter p;
-  p.direction = direction;
-  p.name = name;
-  p.type = type;
-  return p;
-}
+using test::interface;
+using test::parameter;
 
 /// A design of two C functions: Caller's cyclic `tick` calls Callee's protected `get(in x, out
 /// y)` and sporadic `put(v)`.
@@ -128,9 +113,9 @@ Design small_design(bipc::Diagnostics& diags, InterfaceKind get_kind) {
   tick.wcet_high = 2.0;
   caller.provided.push_back(tick);
   using Direction = Parameter::Direction;
-  Interface get = interface("get", InterfaceKind::Any,
-                            {parameter(Direction::In, "x", "Mode"),
-                             parameter(Direction::Out, "y", "Motion2D")});
+  Interface get = interface(
+      "get", InterfaceKind::Any,
+      {parameter(Direction::In, "x", "Mode"), parameter(Direction::Out, "y", "Motion2D")});
   Interface put = interface("put", InterfaceKind::Any, {parameter(Direction::In, "v", "Angle")});
   caller.required = {get, put};
   Function callee{"Callee", "C", {}, {}, {}, std::nullopt, false, {}};
