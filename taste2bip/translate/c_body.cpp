@@ -154,7 +154,7 @@ std::string context_header(const FunctionSignature& f, const asn1::DataView& dat
   const std::string c = c_function_name(f);
   std::string body = "typedef struct {\n";
   for (const ContextValue& v : f.context) {
-    body += "    " + c_parameter_type(data, v.asn1_type) + " " + c_identifier(v.name) + ";\n";
+    body += "    " + c_parameter_type(data, v.asn1_type) + " " + detail::c_context_field(v) + ";\n";
   }
   body += "} context_" + c + ";\n\nextern context_" + c + " " + c + "_ctxt;\n";
   return c_header(context_file(f), "The context parameters of " + f.source->name + ".", body);

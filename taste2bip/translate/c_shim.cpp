@@ -137,7 +137,7 @@ std::string context_values(const FunctionSignature& f) {
     const bool number = !v.empty() && v.find_first_not_of("+-.0123456789e") == std::string::npos;
     if (c.leaves.size() == 1 && c.leaves[0].suffix.empty() &&
         (number || v == "true" || v == "false")) {
-      text += "  " + ctxt + "." + c_identifier(c.name) + " = " + v + ";\n";
+      text += "  " + ctxt + "." + c_context_field(c) + " = " + v + ";\n";
     }
   }
   return text;
@@ -174,6 +174,12 @@ std::string bip_declaration(const ShimCall& call) {
 std::string c_function_name(const FunctionSignature& f) {
   std::string name = c_identifier(f.source->name);
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
+std::string c_context_field(const ContextValue& c) {
+  std::string name = c_identifier(c.name);
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   return name;
 }
 

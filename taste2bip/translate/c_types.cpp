@@ -18,15 +18,12 @@ std::string joined_lines(const std::vector<std::string>& lines) {
   return text;
 }
 
-/// How many types of the view use each enumerant name and each CHOICE alternative name:
-/// a name used by two types gets its type's name before it, as C enumerators share one scope.
+/// How many CHOICE types of the view use each alternative name: a name used by two gets its
+/// type's name before its `_PRESENT`, as C enumerators share one scope.
 struct NameUses {
-  std::map<std::string, int> enumerants, alternatives;
+  std::map<std::string, int> alternatives;
 
   void count(const Type& t) {
-    if (t.kind == TypeKind::Enumerated) {
-      for (const asn1::Enumerant& e : t.enumerants) ++enumerants[c_identifier(e.name)];
-    }
     if (t.kind == TypeKind::Choice) {
       for (const asn1::Component& c : t.components) ++alternatives[c_identifier(c.name)];
     }
@@ -158,7 +155,7 @@ class HeaderWriter {
     std::string text = "typedef enum {\n";
     for (std::size_t i = 0; i < t.enumerants.size(); ++i) {
       const std::string e = c_identifier(t.enumerants[i].name);
-      const std::string spelled = uses_.enumerants[e] > 1 ? name + "_" + e : e;
+      const std::string spelled = name + "_" + e;
       text += "    " + spelled + " = " + std::to_string(t.enumerants[i].value) +
               (i + 1 < t.enumerants.size() ? ",\n" : "\n");
     }
@@ -242,7 +239,7 @@ class HeaderWriter {
 const std::string kHeaderTop =
     "/* The data view's types in C, as TASTE's C bodies use them. Written by taste2bip. */\n"
     "#ifndef TASTE2BIP_DATAVIEW_UNIQ_H\n#define TASTE2BIP_DATAVIEW_UNIQ_H\n\n"
-    "#include <stdbool.h>\n#include <stdint.h>\n#include <inttypes.h>\n\n"
+    "#include <stdbool.h>\n#include <stddef.h>\n#include <stdint.h>\n#include <inttypes.h>\n\n"
     "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n"
     "typedef int64_t asn1SccSint;\ntypedef uint64_t asn1SccUint;\ntypedef double asn1Real;\n"
     "typedef bool flag;\ntypedef unsigned char byte;\ntypedef char NullType;\n\n";

@@ -4,8 +4,9 @@
 // starts at 0 or above), REAL `asn1Real`, BOOLEAN `flag`; SEQUENCE a struct with an `exist`
 // bit-field for OPTIONAL fields; CHOICE a struct of `kind` (`<alt>_PRESENT`, 1 for the first
 // alternative) and union `u`; SEQUENCE OF and OCTET/BIT STRING `arr` with `nCount` when their
-// size varies; character strings `char[max + 1]`; ENUMERATED a C enum of the ASN.1 values.
-// Enumerants and `_PRESENT` names that two types share are prefixed with the type's name.
+// size varies; character strings `char[max + 1]`; ENUMERATED a C enum of the ASN.1 values,
+// each enumerant named `<C type>_<enumerant>` (`asn1SccMySeq_validity_invalid`). A `_PRESENT`
+// name that two CHOICE types share is prefixed with the type's name.
 // Anonymous inner types are named after their place (`asn1SccT_field`, `asn1SccT_elm`).
 #pragma once
 

@@ -48,10 +48,10 @@ TEST(CBodyTypes, HeaderDefinesEachTypeAsTheAsn1CompilerNamesIt) {
   EXPECT_TRUE(has(h, "typedef asn1SccUint asn1SccCount;")) << h;
   EXPECT_TRUE(has(h, "typedef asn1SccSint asn1SccOffset;"));
   EXPECT_TRUE(has(h, "typedef asn1Real asn1SccT_Double;"));
-  // An enumerant or alternative (`a` is Inner.tag's too) two types share is prefixed with its
-  // type's name; the others are not.
-  EXPECT_TRUE(has(h, "asn1SccMode_idle = 0,\n    run = 5\n} asn1SccMode;"));
-  EXPECT_TRUE(has(h, "asn1SccPhase_idle = 0,\n    busy = 1\n} asn1SccPhase;"));
+  // Enumerants are named after their type (the TASTE toolchain's asn1scc does so); an
+  // alternative that two CHOICEs share (`a` is Inner.tag's too) is prefixed with its type's name.
+  EXPECT_TRUE(has(h, "asn1SccMode_idle = 0,\n    asn1SccMode_run = 5\n} asn1SccMode;"));
+  EXPECT_TRUE(has(h, "asn1SccPhase_idle = 0,\n    asn1SccPhase_busy = 1\n} asn1SccPhase;"));
   EXPECT_TRUE(has(
       h, "asn1SccPick_NONE,\n    asn1SccPick_a_PRESENT,\n    b_PRESENT\n} asn1SccPick_selection;"));
   EXPECT_TRUE(has(h,

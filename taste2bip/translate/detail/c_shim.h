@@ -44,6 +44,10 @@ std::string bip_declaration(const ShimCall& call);
 std::string c_function_name(const FunctionSignature& f);
 std::string c_interface_name(const SignalInterface& i);
 
+/// The field of `<f>_ctxt` holding context parameter `c`: its name in lower case, as TASTE's
+/// glue writes it.
+std::string c_context_field(const ContextValue& c);
+
 /// The C type of a parameter or context value spelled `asn1_type` in the view.
 std::string c_parameter_type(const asn1::DataView& data, const std::string& asn1_type);
 
