@@ -7,7 +7,8 @@
 #    c_bodies/properties.mtl gets the answers its header derives by hand, on one thread;
 #  - the same check on two threads ends in the model error that says why;
 #  - the real Demo_ContextParams of ../shared (when present): a C body calls another one
-#    synchronously with a SEQUENCE and prints the sums 0, 2, 4.
+#    synchronously with a SEQUENCE and prints the sums 0, 2, 4; SAMV71's interface tests build
+#    and run.
 #
 # Usage: c_bodies.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -89,6 +90,13 @@ if [[ -f $demo/InterfaceView.aadl ]]; then
   [[ $sums == "0 2 4 " ]] || fail "Demo_ContextParams: sums '$sums', expected '0 2 4 '"
   grep -q 'startup done: 42 -42' "$work/context_params.trace" ||
     fail "Demo_ContextParams: context parameters not set"
+  # Bodies written against asn1scc's types (SEQUENCE, ENUMERATED named after their type) and
+  # calling through protected, unprotected and sporadic interfaces compile and run.
+  rtems=$src/../shared/data/taste/n7space-TASTE-SAMV71-RTEMS-Tests/samv71-rtems-interfaces
+  translate_and_build rtems_interfaces "$rtems/interfaceview.xml"
+  "$bin/smcbip" simulate "$work/rtems_interfaces/taste.bip" --root 'Syst()' \
+    --compiled "$work/rtems_interfaces.gen" --seed 1 --limit 300 > "$work/rtems.trace" 2>&1 ||
+    fail "simulate samv71-rtems-interfaces"
 else
   echo "skipped Demo_ContextParams: ../shared/data/taste is not beside the source tree"
 fi
