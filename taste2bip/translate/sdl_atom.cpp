@@ -151,11 +151,13 @@ std::optional<AtomType> Translator::run() {
     for (const sdl::Procedure* p : list) declare_procedure(*p);
   }
   build_level(process_.body, "", nullptr, nullptr);
-  if (composite_levels_.empty()) {
+  const bool aggregation = std::any_of(composite_levels_.begin(), composite_levels_.end(),
+                                       [](const auto& c) { return c.first->is_aggregation; });
+  if (!aggregation) {
     ready_place_ = fresh("ready");  // after the states, which keep their SDL names
   } else {
     notes_.push_back(
-        "nested states: while a transition runs, the atom is in an intermediate "
+        "state aggregation: while a transition runs, the atom is in an intermediate "
         "place, which properties see");
   }
   label_tables_.emplace_back();

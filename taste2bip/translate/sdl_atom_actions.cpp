@@ -83,8 +83,9 @@ bool Translator::next_state(const sdl::Action& a, Step step, Chain& chain) {
     error(a.at, "'nextstate -' in the start transition has no state to go back to");
     return false;
   }
-  std::optional<std::string> target =
-      a.name == "-" ? std::optional<std::string>(chain.origin) : state_place(a.name, a.via, a.at);
+  std::optional<std::string> target = a.name == "-"
+                                          ? std::optional<std::string>(chain.origin)
+                                          : state_place(a.name, a.via, chain.origin, a.at);
   if (target) terminate(std::move(step), *target, chain);
   return target.has_value();
 }
@@ -140,9 +141,10 @@ void Translator::terminate(Step step, const std::string& target, Chain& chain) {
 }
 
 std::optional<std::string> Translator::state_place(const std::string& name, const std::string& via,
+                                                   const std::string& origin,
                                                    const bipc::Location& at) {
   if (auto it = level_->composites.find(folded(name)); it != level_->composites.end()) {
-    return entry_place(*it->second, via);
+    return entry_place(*it->second, via, origin);
   }
   auto it = level_->states.find(folded(name));
   if (it != level_->states.end() && via.empty()) return it->second;

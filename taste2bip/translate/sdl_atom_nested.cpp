@@ -6,16 +6,21 @@
 
 namespace smcbip::taste2bip::detail {
 
-std::string Translator::entry_place(const sdl::CompositeState& c, const std::string& entry) {
-  const auto key = std::make_pair(&c, folded(entry));
+std::string Translator::entry_place(const sdl::CompositeState& c, const std::string& entry,
+                                    const std::string& origin) {
+  // One entry place per state entering it: while its start runs, that state stays marked.
+  const std::string from = is_state_place(origin) ? origin : "";
+  const auto key = std::make_pair(&c, folded(entry) + "|" + from);
   if (auto it = entry_places_.find(key); it != entry_places_.end()) return it->second;
   const Level* inner = composite_levels_.at(&c);
   std::string base = inner->prefix.substr(0, inner->prefix.size() - 1);
   if (!entry.empty()) base += "_via_" + bip_identifier(entry);
+  if (!from.empty()) base += "_from_" + from;
   const std::string place = fresh(base);
   places_.push_back(place);
   entry_places_[key] = place;
-  pending_entries_.push_back(PendingEntry{&c, entry, place});
+  origin_of_[place] = from;
+  pending_entries_.push_back(PendingEntry{&c, entry, place, from});
   notes_.push_back("entering nested state '" + c.name + "' (" + place +
                    "): its start runs after the return of the call that entered it");
   return place;
@@ -52,7 +57,7 @@ void Translator::translate_entries() {
       continue;
     }
     level_ = inner;
-    Chain chain{e.place, "entry/" + e.place, nullptr, {}, {}};
+    Chain chain{e.origin, "entry/" + e.place, nullptr, {}, {}};
     Step step = open(e.place);
     if (!inline_hook(inner->entry, step, chain, start->at)) continue;
     chain_end(actions(start->transition.actions, 0, std::move(step), chain), start->at);
@@ -67,7 +72,7 @@ void Translator::enter_regions(const PendingEntry& e) {
   }
   std::string to;
   for (const sdl::CompositeState& region : a.body.composite_states) {
-    to += (to.empty() ? "" : ", ") + entry_place(region, "");
+    to += (to.empty() ? "" : ", ") + entry_place(region, "", "");
   }
   // One step marks a place of every region: the regions then run side by side.
   transitions_text_ += "    on " + branch_port(0) + " from " + e.place + " to " + to + " eager\n";

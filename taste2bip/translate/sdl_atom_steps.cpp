@@ -7,6 +7,9 @@
 //   I to J:                     from I         to J
 //   I (of S) to state T:        from S, I      to T, ready
 //   state S to state T:         from S, ready  to T, ready
+// Entering a nested state C from S goes on in C's entry place for S, from which C's start
+// runs: S stays marked until that start reaches C's first substate. A process with a state
+// aggregation has no `ready` (its regions run side by side).
 #include "taste2bip/translate/detail/sdl_translator.h"
 
 namespace smcbip::taste2bip::detail {
@@ -89,7 +92,8 @@ std::string Translator::place(const Chain& chain) {
   } while (used_.count(name) > 0);
   reserve(name);
   places_.push_back(name);
-  origin_of_[name] = chain.origin;
+  // A chain that starts in a nested state's entry place has no SDL state to keep marked.
+  origin_of_[name] = is_state_place(chain.origin) ? chain.origin : "";
   return name;
 }
 

@@ -65,6 +65,12 @@ TEST(SdlAtomNested, CompositeStateEntersWorksAndLeaves) {
 endprocess F;)");
   ASSERT_TRUE(t.atom) << t.errors;
   EXPECT_NE(t.atom->text.find("Busy_One"), std::string::npos) << t.atom->text;
+  // Properties see SDL states only: Idle stays marked, and `ready` taken, until Busy's start
+  // (with its entry procedure) has reached Busy_One.
+  EXPECT_NE(t.atom->text.find("on go_return from Idle__2 to Busy_from_Idle\n"), std::string::npos)
+      << t.atom->text;
+  EXPECT_NE(t.atom->text.find("from Idle, Busy_from_Idle to Busy_One, ready eager"),
+            std::string::npos);
   const RunRecord r = run_process(
       t, {{0, "go", {"0"}}, {1, "go", {"7"}}, {2, "go", {"5"}}, {3, "go", {"3"}}, {4, "poke", {}}});
   // go(0) enters Busy at One; go(7) in One; go(5) in Two leaves through `connect done`;

@@ -109,6 +109,7 @@ struct PendingEntry {
   const sdl::CompositeState* composite = nullptr;
   std::string entry;
   std::string place;
+  std::string origin;  // the SDL state whose transition enters it ("" for the start)
 };
 
 class Translator {
@@ -213,14 +214,15 @@ class Translator {
   bool call_for_value(const sdl::Expr& target, const sdl::Expr& call, Step& step, Chain& chain,
                       Outcome& out, bool& ended);
   std::optional<std::string> state_place(const std::string& name, const std::string& via,
-                                         const bipc::Location& at);
+                                         const std::string& origin, const bipc::Location& at);
 
   // States (sdl_atom_states.cpp).
   void collect_states();
   Level* build_level(const sdl::Body& body, const std::string& prefix, const Level* parent,
                      const sdl::CompositeState* composite);
   void declare_level(Level& level);
-  std::string entry_place(const sdl::CompositeState& c, const std::string& entry);
+  std::string entry_place(const sdl::CompositeState& c, const std::string& entry,
+                          const std::string& origin);
   void translate_entries();
   void enter_regions(const PendingEntry& e);
   const sdl::CompositeState* owner_region(const Level& aggregation, const std::string& key) const;
