@@ -1,0 +1,169 @@
+// pus-console: the ground side of the PUS target. Encodes TCs, decodes TCs and TMs into the
+// console table, and runs scripts or an interactive session over a UDP link.
+//
+// Exit codes: 0 success, 2 input or usage error (a malformed packet, a refused script line),
+// 3 internal error.
+#include <CLI/CLI.hpp>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "bipc/exit_codes.h"
+#include "bipc/options.h"
+#include "bipc/output_file.h"
+#include "bipc/tool_main.h"
+#include "console/console.h"
+
+namespace {
+
+using namespace smcbip;
+using namespace smcbip::pus;
+using namespace smcbip::pus::console;
+
+/// The options of the commands that talk to the on-board program.
+struct LinkOptions {
+  std::uint16_t port = 0;
+  std::string host = "127.0.0.1";
+  unsigned wait_ms = 1000;
+  std::string log;
+};
+
+struct Arguments {
+  TcWords words;
+  std::string out;
+  std::string hex, in;
+  std::string script;
+  LinkOptions link;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError("cannot read this file", ErrorLocation{path});
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::string error;
+  if (!bipc::write_file_atomically(path, text, error)) throw InputError(error);
+}
+
+/// Refuses a --log that could not be written before anything is sent.
+void check_writable(const std::string& path) {
+  std::string target, error;
+  if (!path.empty() && !bipc::output_target(path, target, error)) {
+    throw UsageError("--log: " + error);
+  }
+}
+
+int encode_command(const Arguments& args) {
+  const std::vector<std::uint8_t> bytes = encode_words(args.words, Config{});
+  std::cout << to_hex(bytes) << "\n";
+  if (!args.out.empty()) write_file(args.out, std::string(bytes.begin(), bytes.end()));
+  return exit_codes::kSuccess;
+}
+
+int decode_command(const Arguments& args) {
+  if (args.hex.empty() == args.in.empty()) throw UsageError("decode: expected HEX or --in FILE");
+  std::vector<std::uint8_t> bytes;
+  if (args.in.empty()) {
+    bytes = bytes_of_hex(args.hex, "HEX");
+  } else {
+    const std::string data = read_file(args.in);
+    bytes.assign(data.begin(), data.end());
+  }
+  const Row row = decode_bytes(bytes, Config{});
+  std::cout << table_header() << "\n" << format_row(row) << "\n";
+  return exit_codes::kSuccess;
+}
+
+std::unique_ptr<Link> open_link(const LinkOptions& options) {
+  if (options.port == 0) return nullptr;
+  return std::make_unique<UdpLink>(options.host, options.port);
+}
+
+int script_command(const Arguments& args) {
+  const ParsedScript script = parse_script(read_file(args.script), Config{});
+  for (const ScriptError& e : script.errors) std::cerr << format_error(args.script, e) << "\n";
+  if (!script.errors.empty()) return exit_codes::kInputError;
+  check_writable(args.link.log);
+  const std::unique_ptr<Link> link = open_link(args.link);
+  Session session(Config{}, std::cout, link.get());
+  run_script(script, session, std::chrono::milliseconds(args.link.wait_ms));
+  if (!args.link.log.empty()) write_file(args.link.log, session.table());
+  return exit_codes::kSuccess;
+}
+
+int interactive_command(const Arguments& args) {
+  check_writable(args.link.log);
+  const std::unique_ptr<Link> link = open_link(args.link);
+  Session session(Config{}, std::cout, link.get());
+  const std::size_t refused =
+      run_interactive(std::cin, "<stdin>", session, std::cerr,
+                      std::chrono::milliseconds(args.link.wait_ms), Config{});
+  if (!args.link.log.empty()) write_file(args.link.log, session.table());
+  return refused == 0 ? exit_codes::kSuccess : exit_codes::kInputError;
+}
+
+void add_link_options(CLI::App& command, LinkOptions& link, bool port_required) {
+  command.add_option("--port", link.port, "the UDP port of the on-board program")
+      ->required(port_required)
+      ->check(cli::integer_in(1, 65535))
+      ->type_name("N");
+  command.add_option("--host", link.host, "its IPv4 address")
+      ->capture_default_str()
+      ->type_name("ADDR");
+  command.add_option("--wait", link.wait_ms, "how long to receive TMs after the last TC (ms)")
+      ->capture_default_str()
+      ->check(cli::integer_in(0, 3600000))
+      ->type_name("MS");
+  command.add_option("--log", link.log, "write the table to this file as well")->type_name("FILE");
+}
+
+void add_commands(CLI::App& app, Arguments& args) {
+  CLI::App* encode = app.add_subcommand("encode", "print a TC as hex");
+  register_tc_options(*encode, args.words);
+  encode->add_option("--out", args.out, "write the TC's octets to this file")->type_name("FILE");
+  encode->footer(tc_syntax_help());
+  CLI::App* decode = app.add_subcommand("decode", "decode one TC or TM into a table row");
+  auto* hex =
+      decode->add_option("HEX", args.hex, "the packet in hex (spaces allowed)")->type_name("");
+  decode->add_option("--in", args.in, "read the packet's octets from this file")
+      ->type_name("FILE")
+      ->excludes(hex);
+  CLI::App* script = app.add_subcommand(
+      "script",
+      "send the TCs of a script (one encode-style TC per line, '#' comments) and "
+      "tabulate the TMs received; without --port, list the TCs only");
+  script->add_option("FILE", args.script, "the script")->required()->type_name("");
+  add_link_options(*script, args.link, false);
+  script->footer(tc_syntax_help());
+  CLI::App* interactive = app.add_subcommand(
+      "interactive", "read TCs line by line from stdin, send each and tabulate the TMs received");
+  add_link_options(*interactive, args.link, true);
+  interactive->footer(tc_syntax_help());
+  app.require_subcommand(1);
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"pus-console: the ground console of the PUS target"};
+  Arguments args;
+  add_commands(app, args);
+  args.link.wait_ms = 1000;
+  cli::add_version_flags(app, "pus-console");
+  if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;
+  const std::string command = app.get_subcommands().front()->get_name();
+  if (command == "encode") return encode_command(args);
+  if (command == "decode") return decode_command(args);
+  if (command == "script") return script_command(args);
+  return interactive_command(args);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::guarded_main("pus-console", exit_codes::kJudgingCodes,
+                           [&] { return run(argc, argv); });
+}

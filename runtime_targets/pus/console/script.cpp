@@ -1,0 +1,139 @@
+// Parsing script lines with the encode command's declaration, and locating what they refuse.
+#include "console/script.h"
+
+#include <algorithm>
+
+namespace smcbip::pus::console {
+namespace {
+
+struct Word {
+  std::string text;
+  std::uint32_t column = 0;
+};
+
+/// The words of a line up to a '#' that starts a word, with their 1-based columns.
+std::vector<Word> split_words(std::string_view text) {
+  std::vector<Word> words;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text[i] == ' ' || text[i] == '\t' || text[i] == '\r') {
+      ++i;
+      continue;
+    }
+    if (text[i] == '#') break;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t' && text[i] != '\r') ++i;
+    words.push_back(
+        {std::string(text.substr(start, i - start)), static_cast<std::uint32_t>(start + 1)});
+  }
+  return words;
+}
+
+bool is_option(const std::string& word) { return word.size() > 1 && word[0] == '-'; }
+
+/// The column of `word` given to `option` (SERVICE and SUBTYPE are the first two plain words);
+/// the end of the line when the word is missing.
+std::uint32_t locate(const std::vector<Word>& words, const std::string& option,
+                     const std::string& word, std::uint32_t end_column) {
+  std::string current;  // the option the words at this point belong to
+  std::size_t plain = 0;
+  for (const Word& w : words) {
+    if (is_option(w.text)) {
+      current = w.text.substr(0, w.text.find('='));
+      if (current == option && (word.empty() || w.text == option + "=" + word)) return w.column;
+      continue;
+    }
+    const std::string owner = current.empty() ? (plain++ == 0 ? "SERVICE" : "SUBTYPE") : current;
+    if (owner == option && w.text == word) return w.column;
+  }
+  return end_column;
+}
+
+/// The column CLI11's message is about: the first option word it names, else the line's end.
+std::uint32_t locate_cli_error(const std::vector<Word>& words, const std::string& message,
+                               std::uint32_t end_column) {
+  for (const Word& w : words) {
+    const std::string name = w.text.substr(0, w.text.find('='));
+    if (is_option(w.text) && message.find(name) != std::string::npos) return w.column;
+  }
+  return end_column;
+}
+
+ScriptError located(std::uint32_t line, std::uint32_t column, const std::string& message) {
+  return {line, column, message};
+}
+
+}  // namespace
+
+LineResult parse_line(std::string_view text, std::uint32_t line, const Config& config) {
+  LineResult result;
+  std::vector<Word> words = split_words(text);
+  if (!words.empty() && words.front().text == "encode") words.erase(words.begin());
+  if (words.empty()) return result;
+  const auto end_column = static_cast<std::uint32_t>(text.find_last_not_of(" \t\r") + 2);
+  CLI::App app;
+  app.set_help_flag();
+  app.allow_extras();
+  TcWords tc_words;
+  register_tc_options(app, tc_words);
+  std::vector<std::string> args;
+  for (auto w = words.rbegin(); w != words.rend(); ++w) args.push_back(w->text);
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    result.errors.push_back(
+        located(line, locate_cli_error(words, e.what(), end_column),
+                std::string("expected SERVICE SUBTYPE and the TC's fields: ") + e.what()));
+    return result;
+  }
+  if (!app.remaining().empty()) {
+    const std::string& extra = app.remaining().front();
+    const auto it = std::find_if(words.begin() + std::min<std::size_t>(2, words.size()),
+                                 words.end(), [&](const Word& w) { return w.text == extra; });
+    result.errors.push_back(located(line, it == words.end() ? end_column : it->column,
+                                    "expected a field or header option of the TC (see pus-console "
+                                    "encode --help), got '" +
+                                        extra + "'"));
+    return result;
+  }
+  try {
+    result.tc = build_tc(tc_words, config);
+    encode_tc(result.tc.tc, config);  // what the library refuses is refused here, located
+    result.has_tc = true;
+  } catch (const TcSyntaxError& e) {
+    const std::uint32_t column =
+        e.option() == "TC" ? words.front().column : locate(words, e.option(), e.word(), end_column);
+    result.errors.push_back(located(line, column, e.what()));
+  }
+  return result;
+}
+
+void Sequencer::number(BuiltTc& built) {
+  PrimaryHeader& primary = built.tc.primary;
+  if (!built.seq_given) primary.sequence_count = next_[primary.apid];
+  next_[primary.apid] =
+      static_cast<std::uint16_t>((primary.sequence_count + 1) & kMaxSequenceCount);
+}
+
+ParsedScript parse_script(std::string_view text, const Config& config) {
+  ParsedScript script;
+  Sequencer sequencer;
+  std::uint32_t line = 0;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    ++line;
+    LineResult result = parse_line(text.substr(start, end - start), line, config);
+    for (ScriptError& e : result.errors) script.errors.push_back(std::move(e));
+    if (result.has_tc) {
+      sequencer.number(result.tc);
+      script.tcs.push_back({result.tc.tc, encode_tc(result.tc.tc, config), line});
+    }
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  if (!script.errors.empty()) script.tcs.clear();
+  return script;
+}
+
+}  // namespace smcbip::pus::console
