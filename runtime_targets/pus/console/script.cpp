@@ -31,8 +31,8 @@ std::vector<Word> split_words(std::string_view text) {
 
 bool is_option(const std::string& word) { return word.size() > 1 && word[0] == '-'; }
 
-/// The column of `word` given to `option` (SERVICE and SUBTYPE are the first two plain words);
-/// the end of the line when the word is missing.
+/// The column of `word` given to `option` (SERVICE and SUBTYPE are the first two plain words),
+/// of the option itself when `word` is empty; the end of the line when neither is there.
 std::uint32_t locate(const std::vector<Word>& words, const std::string& option,
                      const std::string& word, std::uint32_t end_column) {
   std::string current;  // the option the words at this point belong to
@@ -87,7 +87,7 @@ LineResult parse_line(std::string_view text, std::uint32_t line, const Config& c
     return result;
   }
   if (!app.remaining().empty()) {
-    const std::string& extra = app.remaining().front();
+    const std::string extra = app.remaining().front();
     const auto it = std::find_if(words.begin() + std::min<std::size_t>(2, words.size()),
                                  words.end(), [&](const Word& w) { return w.text == extra; });
     result.errors.push_back(located(line, it == words.end() ? end_column : it->column,
@@ -127,7 +127,9 @@ ParsedScript parse_script(std::string_view text, const Config& config) {
     for (ScriptError& e : result.errors) script.errors.push_back(std::move(e));
     if (result.has_tc) {
       sequencer.number(result.tc);
-      script.tcs.push_back({result.tc.tc, encode_tc(result.tc.tc, config), line});
+      ParsedScript::Entry entry{result.tc.tc, encode_tc(result.tc.tc, config), line};
+      entry.tc.primary.data_length = static_cast<std::uint16_t>(entry.bytes.size() - 7);
+      script.tcs.push_back(std::move(entry));
     }
     if (end == text.size()) break;
     start = end + 1;

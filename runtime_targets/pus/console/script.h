@@ -40,8 +40,8 @@ class Sequencer {
   std::map<std::uint16_t, std::uint16_t> next_;
 };
 
-/// The TCs of a script, numbered and encoded, each with its line; or the errors of every
-/// refused line (then no TC).
+/// The TCs of a script, numbered and encoded (with the data length of their octets), each
+/// with its line; or the errors of every refused line (then no TC).
 struct ParsedScript {
   struct Entry {
     Telecommand tc;

@@ -6,27 +6,22 @@
 namespace smcbip::pus::console {
 namespace {
 
-/// A field option of TcWords: its name, whether it was given, and its first word.
+/// A field option of TcWords: its name and whether it was given.
 struct GivenField {
   const char* name;
   bool given;
-  std::string first;
 };
 
-std::string first_of(const std::vector<std::string>& words) {
-  return words.empty() ? std::string() : words.front();
-}
-
 std::array<GivenField, 9> given_fields(const TcWords& w) {
-  return {{{"--sid", !w.sids.empty(), first_of(w.sids)},
-           {"--event", !w.events.empty(), first_of(w.events)},
-           {"--pmon", !w.pmons.empty(), first_of(w.pmons)},
-           {"--param", !w.params.empty(), first_of(w.params)},
-           {"--function", w.function.has_value(), w.function.value_or("")},
-           {"--arg", !w.args.empty(), first_of(w.args)},
-           {"--rate", w.rate.has_value(), w.rate.value_or("")},
-           {"--release", !w.releases.empty(), first_of(w.releases)},
-           {"--action", !w.actions.empty(), first_of(w.actions)}}};
+  return {{{"--sid", !w.sids.empty()},
+           {"--event", !w.events.empty()},
+           {"--pmon", !w.pmons.empty()},
+           {"--param", !w.params.empty()},
+           {"--function", w.function.has_value()},
+           {"--arg", !w.args.empty()},
+           {"--rate", w.rate.has_value()},
+           {"--release", !w.releases.empty()},
+           {"--action", !w.actions.empty()}}};
 }
 
 /// The field options of a subtype, as --help writes them.
@@ -70,7 +65,7 @@ void check_fields(const MessageType& type, const TcWords& words) {
     // An option is accepted when its name stands in the subtype's field list as a whole word.
     const auto at = accepted.find(name + " ");
     if (at == std::string::npos && accepted != name) {
-      throw TcSyntaxError(name, field.first,
+      throw TcSyntaxError(name, "",
                           name + ": " + type_name(type) + " (" + type.name +
                               ") takes no such field; expected " + accepted);
     }

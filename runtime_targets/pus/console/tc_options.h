@@ -28,7 +28,8 @@ void register_tc_options(CLI::App& app, TcWords& words);
 std::string tc_syntax_help();
 
 /// A word of a TC that cannot be converted: the option it was given to ("SERVICE",
-/// "--apid", ...), the word itself ("" for a missing option) and what was expected.
+/// "--apid", ...), the word itself ("" when the option itself is at fault: given to a subtype
+/// without that field, or missing) and what was expected.
 class TcSyntaxError : public std::runtime_error {
  public:
   TcSyntaxError(std::string option, std::string word, const std::string& message)
