@@ -144,16 +144,18 @@ void add_commands(CLI::App& app, Arguments& args) {
       "interactive", "read TCs line by line from stdin, send each and tabulate the TMs received");
   add_link_options(*interactive, args.link, true);
   interactive->footer(tc_syntax_help());
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
 }
 
 int run(int argc, char** argv) {
   CLI::App app{"pus-console: the ground console of the PUS target"};
   Arguments args;
   add_commands(app, args);
-  args.link.wait_ms = 1000;
   cli::add_version_flags(app, "pus-console");
   if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;
+  if (app.get_subcommands().empty()) {
+    throw UsageError("expected a command: encode, decode, script or interactive (see --help)");
+  }
   const std::string command = app.get_subcommands().front()->get_name();
   if (command == "encode") return encode_command(args);
   if (command == "decode") return decode_command(args);

@@ -28,20 +28,19 @@ void register_tc_options(CLI::App& app, TcWords& words) {
   app.add_option("SUBTYPE", words.subtype, "the message subtype, e.g. 1")
       ->required()
       ->type_name("");
-  add_list_option(app, "--sid", words.sids, "[3,5] [3,6]: housekeeping structure IDs", "ID...");
-  add_list_option(app, "--event", words.events, "[5,5] [5,6] [19,4]: event definition IDs",
-                  "ID...");
-  add_list_option(app, "--pmon", words.pmons, "[12,1] [12,2]: monitoring definition IDs", "ID...");
+  add_list_option(app, "--sid", words.sids, "[3,5] [3,6]: housekeeping structure IDs", "ID");
+  add_list_option(app, "--event", words.events, "[5,5] [5,6] [19,4]: event definition IDs", "ID");
+  add_list_option(app, "--pmon", words.pmons, "[12,1] [12,2]: monitoring definition IDs", "ID");
   add_list_option(app, "--param", words.params, "[20,1]: parameter IDs; [20,3]: ID=VALUE pairs",
-                  "ID[=VALUE]...");
+                  "ID[=VALUE]");
   add_text_option(app, "--function", words.function, "[8,1]: the function ID", "ID");
-  add_list_option(app, "--arg", words.args, "[8,1]: function arguments", "ID=VALUE...");
+  add_list_option(app, "--arg", words.args, "[8,1]: function arguments", "ID=VALUE");
   add_text_option(app, "--rate", words.rate, "[9,1]: the rate exponent (0..255)", "N");
   add_list_option(app, "--release", words.releases,
                   "[11,4]: a TC released at an on-board time (CUC seconds, optionally :FINE)",
-                  "TIME=HEX...");
+                  "TIME=HEX");
   add_list_option(app, "--action", words.actions, "[19,1]: a TC run when an event occurs",
-                  "EVENT=HEX...");
+                  "EVENT=HEX");
   add_text_option(app, "--apid", words.apid, "the application process ID (default 0)", "N");
   add_text_option(app, "--seq", words.seq,
                   "the packet sequence count (default 0; in a script "
