@@ -3,6 +3,7 @@
 #include <charconv>
 #include <limits>
 
+#include "console/detail/tc_fields.h"
 #include "console/hex.h"
 #include "console/tc_options.h"
 
@@ -129,13 +130,6 @@ Activities activities(const std::string& option, const Words& words, const Confi
   return out;
 }
 
-}  // namespace
-
-// Declared in tc_fields.cpp: the per-subtype check of which field options were given.
-void check_fields(const MessageType& type, const TcWords& words);
-
-namespace {
-
 Message id_list_message(const MessageType& type, const TcWords& w, const Config& c) {
   switch (type.service) {
     case 3:
@@ -226,7 +220,7 @@ BuiltTc build_tc(const TcWords& w, const Config& config) {
                             "knows (see --help), got TC[" +
                             w.service + "," + w.subtype + "]");
   }
-  check_fields(*type.value(), w);
+  detail::check_fields(*type.value(), w);
   tc.data = app_data(*type.value(), w, config);
   if (w.apid)
     tc.primary.apid =

@@ -1,7 +1,7 @@
 // Which field options each telecommand subtype takes, and the refusal of the others.
-#include <array>
+#include "console/detail/tc_fields.h"
 
-#include "console/tc_options.h"
+#include <array>
 
 namespace smcbip::pus::console {
 namespace {
@@ -57,6 +57,8 @@ std::string type_name(const MessageType& type) {
 
 }  // namespace
 
+namespace detail {
+
 void check_fields(const MessageType& type, const TcWords& words) {
   const std::string accepted = fields_of(type);
   for (const GivenField& field : given_fields(words)) {
@@ -80,4 +82,5 @@ void check_fields(const MessageType& type, const TcWords& words) {
   }
 }
 
+}  // namespace detail
 }  // namespace smcbip::pus::console
