@@ -34,6 +34,8 @@ expect "decode --in" 0 \
   "$console" decode --in "$tmp/tc.bin"
 expect "decode hex" 0 "TC  17   1    -             0      0x0    0      valid     TC[17,1]" "" -- \
   "$console" decode "18 00 c0 00 00 06 2f 11 01 00 00 79 58"
+expect "decode hex words" 0 "TC[17,1] are-you-alive connection test" "" -- \
+  "$console" decode 1800c000 0006 2f11010000 7958
 expect "decode bad crc" 2 "" "pus-console: error: malformed packet: bad-crc at byte " -- \
   "$console" decode 1800c00000062f110100007959
 expect "decode bad hex" 2 "" "HEX: expected a hex digit or a separator at character 3" -- \

@@ -34,7 +34,8 @@ struct LinkOptions {
 struct Arguments {
   TcWords words;
   std::string out;
-  std::string hex, in;
+  std::vector<std::string> hex;  // the words of HEX, joined by spaces
+  std::string in;
   std::string script;
   LinkOptions link;
 };
@@ -69,7 +70,9 @@ int decode_command(const Arguments& args) {
   if (args.hex.empty() == args.in.empty()) throw UsageError("decode: expected HEX or --in FILE");
   std::vector<std::uint8_t> bytes;
   if (args.in.empty()) {
-    bytes = bytes_of_hex(args.hex, "HEX");
+    std::string text;
+    for (const std::string& word : args.hex) text += (text.empty() ? "" : " ") + word;
+    bytes = bytes_of_hex(text, "HEX");
   } else {
     const std::string data = read_file(args.in);
     bytes.assign(data.begin(), data.end());
@@ -128,8 +131,8 @@ void add_commands(CLI::App& app, Arguments& args) {
   encode->add_option("--out", args.out, "write the TC's octets to this file")->type_name("FILE");
   encode->footer(tc_syntax_help());
   CLI::App* decode = app.add_subcommand("decode", "decode one TC or TM into a table row");
-  auto* hex =
-      decode->add_option("HEX", args.hex, "the packet in hex (spaces allowed)")->type_name("");
+  auto* hex = decode->add_option("HEX", args.hex, "the packet in hex (in one or more words)")
+                  ->type_name("");
   decode->add_option("--in", args.in, "read the packet's octets from this file")
       ->type_name("FILE")
       ->excludes(hex);
