@@ -1,7 +1,10 @@
 // Which field options each telecommand subtype takes, and the refusal of the others.
 #include "console/detail/tc_fields.h"
 
+#include <algorithm>
 #include <array>
+#include <string>
+#include <vector>
 
 namespace smcbip::pus::console {
 namespace {
@@ -24,30 +27,42 @@ std::array<GivenField, 9> given_fields(const TcWords& w) {
            {"--action", !w.actions.empty()}}};
 }
 
-/// The field options of a subtype, as --help writes them.
-std::string fields_of(const MessageType& type) {
+/// The field options a subtype takes, the one it requires (or none), and its syntax as --help
+/// writes it.
+struct Fields {
+  std::vector<std::string> options;
+  std::string required;
+  std::string syntax;
+};
+
+Fields id_list_fields(std::uint8_t service) {
+  switch (service) {
+    case 3:
+      return {{"--sid"}, "", "--sid ID..."};
+    case 12:
+      return {{"--pmon"}, "", "--pmon ID..."};
+    case 20:
+      return {{"--param"}, "", "--param ID..."};
+    default:
+      return {{"--event"}, "", "--event ID..."};
+  }
+}
+
+Fields fields_of(const MessageType& type) {
   switch (type.shape) {
     case Shape::IdList:
-      switch (type.service) {
-        case 3:
-          return "--sid ID...";
-        case 12:
-          return "--pmon ID...";
-        case 20:
-          return "--param ID...";
-        default:
-          return "--event ID...";
-      }
+      return id_list_fields(type.service);
     case Shape::FunctionCall:
-      return "--function ID [--arg ID=VALUE...]";
+      return {{"--function", "--arg"}, "--function", "--function ID [--arg ID=VALUE...]"};
     case Shape::ParameterValues:
-      return "--param ID=VALUE...";
+      return {{"--param"}, "", "--param ID=VALUE..."};
     case Shape::TimeReportRate:
-      return "--rate N";
+      return {{"--rate"}, "--rate", "--rate N"};
     case Shape::Activities:
-      return type.service == 11 ? "--release TIME=HEX..." : "--action EVENT=HEX...";
+      return type.service == 11 ? Fields{{"--release"}, "", "--release TIME=HEX..."}
+                                : Fields{{"--action"}, "", "--action EVENT=HEX..."};
     default:
-      return "no fields";
+      return {{}, "", "no fields"};
   }
 }
 
@@ -60,25 +75,23 @@ std::string type_name(const MessageType& type) {
 namespace detail {
 
 void check_fields(const MessageType& type, const TcWords& words) {
-  const std::string accepted = fields_of(type);
+  const Fields fields = fields_of(type);
+  const auto takes = [&](const std::string& name) {
+    return std::find(fields.options.begin(), fields.options.end(), name) != fields.options.end();
+  };
   for (const GivenField& field : given_fields(words)) {
-    if (!field.given) continue;
-    const std::string name = field.name;
-    // An option is accepted when its name stands in the subtype's field list as a whole word.
-    const auto at = accepted.find(name + " ");
-    if (at == std::string::npos && accepted != name) {
-      throw TcSyntaxError(name, "",
-                          name + ": " + type_name(type) + " (" + type.name +
-                              ") takes no such field; expected " + accepted);
+    if (field.given && !takes(field.name)) {
+      throw TcSyntaxError(field.name, "",
+                          std::string(field.name) + ": " + type_name(type) + " (" + type.name +
+                              ") takes no such field; expected " + fields.syntax);
     }
   }
-  const bool needs_function = type.shape == Shape::FunctionCall && !words.function;
-  const bool needs_rate = type.shape == Shape::TimeReportRate && !words.rate;
-  if (needs_function || needs_rate) {
-    const std::string name = needs_function ? "--function" : "--rate";
-    throw TcSyntaxError(
-        name, "",
-        type_name(type) + " (" + type.name + ") expected " + accepted + ", got no " + name);
+  for (const GivenField& field : given_fields(words)) {
+    if (!field.given && field.name == fields.required) {
+      throw TcSyntaxError(fields.required, "",
+                          type_name(type) + " (" + type.name + ") expected " + fields.syntax +
+                              ", got no " + fields.required);
+    }
   }
 }
 
