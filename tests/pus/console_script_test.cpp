@@ -60,6 +60,7 @@ TEST(PusConsoleScript, EveryRefusedLineIsLocatedAndNoTcIsKept) {
             "decimal or 0x hex), got 'x'");
   EXPECT_NE(script.errors[2].message.find("got '--bogus'"), std::string::npos)
       << script.errors[2].message;
+  EXPECT_EQ(script.errors[5].message, "--apid: expected a value after it, got none");
 }
 
 TEST(PusConsoleScript, WithoutALinkTheTcsAreListedAsNotSent) {

@@ -80,6 +80,11 @@ LineResult parse_line(std::string_view text, std::uint32_t line, const Config& c
   for (auto w = words.rbegin(); w != words.rend(); ++w) args.push_back(w->text);
   try {
     app.parse(args);
+  } catch (const CLI::ArgumentMismatch& e) {  // "--sid: 1 required ID missing"
+    const std::string what = e.what(), option = what.substr(0, what.find(':'));
+    result.errors.push_back(located(line, locate_cli_error(words, what, end_column),
+                                    option + ": expected a value after it, got none"));
+    return result;
   } catch (const CLI::ParseError& e) {
     result.errors.push_back(
         located(line, locate_cli_error(words, e.what(), end_column),
