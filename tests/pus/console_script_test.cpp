@@ -63,6 +63,26 @@ TEST(PusConsoleScript, EveryRefusedLineIsLocatedAndNoTcIsKept) {
   EXPECT_EQ(script.errors[5].message, "--apid: expected a value after it, got none");
 }
 
+TEST(PusConsoleScript, WaitLinesArePausesAndTheirWordsAreChecked) {
+  const ParsedScript script = parse_script("17 1\nwait 250  # let the TMs come\n17 1\n", Config{});
+  ASSERT_TRUE(script.errors.empty());
+  ASSERT_EQ(script.tcs.size(), 3u);
+  EXPECT_FALSE(script.tcs[0].wait);
+  ASSERT_TRUE(script.tcs[1].wait);
+  EXPECT_EQ(script.tcs[1].wait->count(), 250);
+  EXPECT_EQ(script.tcs[1].line, 2u);
+  EXPECT_EQ(script.tcs[2].tc.primary.sequence_count, 1);
+  const ParsedScript bad = parse_script("wait\nwait soon\nwait 3600001\nwait 5 more\n", Config{});
+  ASSERT_EQ(bad.errors.size(), 4u);
+  EXPECT_EQ(
+      format_error("s.tc", bad.errors[0]),
+      "s.tc:1:5: error: wait: expected a number of milliseconds from 0 to 3600000, got nothing");
+  EXPECT_EQ(bad.errors[1].column, 6u);
+  EXPECT_EQ(bad.errors[2].column, 6u);
+  EXPECT_EQ(bad.errors[3].column, 8u);
+  EXPECT_NE(bad.errors[3].message.find("got 'more' after it"), std::string::npos);
+}
+
 TEST(PusConsoleScript, WithoutALinkTheTcsAreListedAsNotSent) {
   const ParsedScript script = parse_script("17 1 --apid 0x12\n20 1 --param 7\n", Config{});
   std::ostringstream out;

@@ -172,6 +172,30 @@ std::string read_all(const std::string& path) {
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
+// A pause lets the answers to the first TC in before the second is sent.
+TEST(PusConsoleUdp, AWaitLineReceivesBeforeTheNextTc) {
+  Responder responder;
+  std::thread server([&] { responder.serve(); });
+  const ParsedScript script =
+      parse_script("17 1 --apid 0x12\nwait 500\n20 1 --param 7\n", Config{});
+  std::ostringstream out;
+  {
+    UdpLink link("127.0.0.1", responder.port());
+    Session session(Config{}, out, &link);
+    run_script(script, session, std::chrono::milliseconds(500));
+    EXPECT_EQ(informations(session),
+              (std::vector<std::string>{
+                  "sent TC[17,1] are-you-alive connection test",
+                  "ok TM[1,1] acceptance success of TC apid 0x12 seq 0",
+                  "ok TM[17,2] are-you-alive connection test report",
+                  "ok TM[1,7] completion success of TC apid 0x12 seq 0",
+                  "sent TC[20,1] report parameter values: parameters 7",
+                  "failure TM[1,2] acceptance failure of TC apid 0x0 seq 0, code 1"}));
+  }
+  responder.stop();
+  server.join();
+}
+
 // The executable itself: a script sent over UDP, the table on stdout and the same in the log.
 TEST(PusConsoleUdp, TheExecutableRunsAScriptAndLogsTheTable) {
   char folder[] = "/tmp/pus_console_XXXXXX";

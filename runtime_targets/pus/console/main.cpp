@@ -138,13 +138,16 @@ void add_commands(CLI::App& app, Arguments& args) {
       ->excludes(hex);
   CLI::App* script = app.add_subcommand(
       "script",
-      "send the TCs of a script (one encode-style TC per line, '#' comments) and "
-      "tabulate the TMs received; without --port, list the TCs only");
+      "send the TCs of a script (one encode-style TC per line, 'wait MS' to receive for MS ms "
+      "before going on, '#' comments) and tabulate the TMs received; without --port, list the "
+      "TCs only");
   script->add_option("FILE", args.script, "the script")->required()->type_name("");
   add_link_options(*script, args.link, false);
   script->footer(tc_syntax_help());
-  CLI::App* interactive = app.add_subcommand(
-      "interactive", "read TCs line by line from stdin, send each and tabulate the TMs received");
+  CLI::App* interactive =
+      app.add_subcommand("interactive",
+                         "read TCs (and 'wait MS') line by line from stdin, send each and "
+                         "tabulate the TMs received");
   add_link_options(*interactive, args.link, true);
   interactive->footer(tc_syntax_help());
   app.require_subcommand(0, 1);

@@ -2,6 +2,7 @@
 #include "console/script.h"
 
 #include <algorithm>
+#include <charconv>
 
 namespace smcbip::pus::console {
 namespace {
@@ -63,14 +64,39 @@ ScriptError located(std::uint32_t line, std::uint32_t column, const std::string&
   return {line, column, message};
 }
 
+/// `wait MS`: the pause, or the error at the word that is not a number of milliseconds.
+void parse_wait(const std::vector<Word>& words, std::uint32_t line, std::uint32_t end_column,
+                LineResult& result) {
+  const std::string expected =
+      "wait: expected a number of milliseconds from 0 to " + std::to_string(kMaxWaitMs);
+  if (words.size() != 2) {
+    const std::uint32_t column = words.size() < 2 ? end_column : words[2].column;
+    const std::string got = words.size() < 2 ? "nothing" : "'" + words[2].text + "' after it";
+    result.errors.push_back(located(line, column, expected + ", got " + got));
+    return;
+  }
+  const std::string& text = words[1].text;
+  std::uint64_t ms = 0;
+  const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), ms);
+  if (error != std::errc() || stop != text.data() + text.size() || ms > kMaxWaitMs) {
+    result.errors.push_back(located(line, words[1].column, expected + ", got '" + text + "'"));
+    return;
+  }
+  result.wait = std::chrono::milliseconds(ms);
+}
+
 }  // namespace
 
 LineResult parse_line(std::string_view text, std::uint32_t line, const Config& config) {
   LineResult result;
   std::vector<Word> words = split_words(text);
-  if (!words.empty() && words.front().text == "encode") words.erase(words.begin());
   if (words.empty()) return result;
   const auto end_column = static_cast<std::uint32_t>(text.find_last_not_of(" \t\r") + 2);
+  if (words.front().text == "wait") {
+    parse_wait(words, line, end_column, result);
+    return result;
+  }
+  if (words.front().text == "encode") words.erase(words.begin());
   CLI::App app;
   app.set_help_flag();
   app.allow_extras();
@@ -130,9 +156,10 @@ ParsedScript parse_script(std::string_view text, const Config& config) {
     ++line;
     LineResult result = parse_line(text.substr(start, end - start), line, config);
     for (ScriptError& e : result.errors) script.errors.push_back(std::move(e));
+    if (result.wait) script.tcs.push_back({Telecommand{}, {}, line, result.wait});
     if (result.has_tc) {
       sequencer.number(result.tc);
-      ParsedScript::Entry entry{result.tc.tc, encode_tc(result.tc.tc, config), line};
+      ParsedScript::Entry entry{result.tc.tc, encode_tc(result.tc.tc, config), line, std::nullopt};
       entry.tc.primary.data_length = static_cast<std::uint16_t>(entry.bytes.size() - 7);
       script.tcs.push_back(std::move(entry));
     }

@@ -46,7 +46,13 @@ void Session::received(std::span<const std::uint8_t> bytes) {
 }
 
 void run_script(const ParsedScript& script, Session& session, std::chrono::milliseconds wait) {
-  for (const ParsedScript::Entry& entry : script.tcs) session.send(entry.tc, entry.bytes);
+  for (const ParsedScript::Entry& entry : script.tcs) {
+    if (entry.wait) {
+      session.receive_for(*entry.wait);
+    } else {
+      session.send(entry.tc, entry.bytes);
+    }
+  }
   if (!script.tcs.empty()) session.receive_for(wait);
 }
 
@@ -60,6 +66,7 @@ std::size_t run_interactive(std::istream& in, const std::string& name, Session& 
     LineResult result = parse_line(text, line, config);
     for (const ScriptError& e : result.errors) err << format_error(name, e) << "\n";
     refused += result.errors.empty() ? 0 : 1;
+    if (result.wait) session.receive_for(*result.wait);
     if (!result.has_tc) continue;
     sequencer.number(result.tc);
     session.send(result.tc.tc, encode_tc(result.tc.tc, config));

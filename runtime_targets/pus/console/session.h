@@ -44,12 +44,13 @@ class Session {
   std::vector<Row> rows_;
 };
 
-/// Sends the TCs of a script in order and, with a link, receives until `wait` after the last.
+/// Sends the TCs of a script in order, receiving during its pauses and, with a link, until
+/// `wait` after the last entry.
 void run_script(const ParsedScript& script, Session& session, std::chrono::milliseconds wait);
 
 /// Reads TC lines from `in` until its end, as a script's (errors go to `err` as
 /// `NAME:LINE:COL: error: ...` and the line is skipped); sends each TC at once and receives
-/// for `wait` after it. Returns the number of refused lines.
+/// for `wait` after it (and for MS on a `wait MS` line). Returns the number of refused lines.
 std::size_t run_interactive(std::istream& in, const std::string& name, Session& session,
                             std::ostream& err, std::chrono::milliseconds wait,
                             const Config& config);
