@@ -3,6 +3,8 @@
 //
 // Exit codes: 0 success, 2 input or usage error (a malformed packet, a refused script line),
 // 3 internal error.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
@@ -102,6 +104,10 @@ int script_command(const Arguments& args) {
 int interactive_command(const Arguments& args) {
   check_writable(args.link.log);
   const std::unique_ptr<Link> link = open_link(args.link);
+  if (::isatty(STDIN_FILENO) != 0) {
+    std::cerr << "pus-console: one TC per line as for encode (see interactive --help), "
+                 "'wait MS' to receive, end of input (Ctrl-D) to stop\n";
+  }
   Session session(Config{}, std::cout, link.get());
   const std::size_t refused =
       run_interactive(std::cin, "<stdin>", session, std::cerr,
