@@ -8,12 +8,13 @@
 #include <string_view>
 #include <vector>
 
-#include "console/hex.h"         // IWYU pragma: export
-#include "console/link.h"        // IWYU pragma: export
-#include "console/script.h"      // IWYU pragma: export
-#include "console/session.h"     // IWYU pragma: export
-#include "console/table.h"       // IWYU pragma: export
-#include "console/tc_options.h"  // IWYU pragma: export
+#include "console/hex.h"           // IWYU pragma: export
+#include "console/link.h"          // IWYU pragma: export
+#include "console/link_options.h"  // IWYU pragma: export
+#include "console/script.h"        // IWYU pragma: export
+#include "console/session.h"       // IWYU pragma: export
+#include "console/table.h"         // IWYU pragma: export
+#include "console/tc_options.h"    // IWYU pragma: export
 #include "packets/packets.h"
 
 namespace smcbip::pus::console {

@@ -25,14 +25,6 @@ using namespace smcbip;
 using namespace smcbip::pus;
 using namespace smcbip::pus::console;
 
-/// The options of the commands that talk to the on-board program.
-struct LinkOptions {
-  std::uint16_t port = 0;
-  std::string host = "127.0.0.1";
-  unsigned wait_ms = 1000;
-  std::string log;
-};
-
 struct Arguments {
   TcWords words;
   std::string out;
@@ -84,11 +76,6 @@ int decode_command(const Arguments& args) {
   return exit_codes::kSuccess;
 }
 
-std::unique_ptr<Link> open_link(const LinkOptions& options) {
-  if (options.port == 0) return nullptr;
-  return std::make_unique<UdpLink>(options.host, options.port);
-}
-
 int script_command(const Arguments& args) {
   const ParsedScript script = parse_script(read_file(args.script), Config{});
   for (const ScriptError& e : script.errors) std::cerr << format_error(args.script, e) << "\n";
@@ -116,21 +103,6 @@ int interactive_command(const Arguments& args) {
   return refused == 0 ? exit_codes::kSuccess : exit_codes::kInputError;
 }
 
-void add_link_options(CLI::App& command, LinkOptions& link, bool port_required) {
-  command.add_option("--port", link.port, "the UDP port of the on-board program")
-      ->required(port_required)
-      ->check(cli::integer_in(1, 65535))
-      ->type_name("N");
-  command.add_option("--host", link.host, "its IPv4 address")
-      ->capture_default_str()
-      ->type_name("ADDR");
-  command.add_option("--wait", link.wait_ms, "how long to receive TMs after the last TC (ms)")
-      ->capture_default_str()
-      ->check(cli::integer_in(0, 3600000))
-      ->type_name("MS");
-  command.add_option("--log", link.log, "write the table to this file as well")->type_name("FILE");
-}
-
 void add_commands(CLI::App& app, Arguments& args) {
   CLI::App* encode = app.add_subcommand("encode", "print a TC as hex");
   register_tc_options(*encode, args.words);
@@ -148,13 +120,13 @@ void add_commands(CLI::App& app, Arguments& args) {
       "before going on, '#' comments) and tabulate the TMs received; without --port, list the "
       "TCs only");
   script->add_option("FILE", args.script, "the script")->required()->type_name("");
-  add_link_options(*script, args.link, false);
+  register_link_options(*script, args.link, false);
   script->footer(tc_syntax_help());
   CLI::App* interactive =
       app.add_subcommand("interactive",
                          "read TCs (and 'wait MS') line by line from stdin, send each and "
                          "tabulate the TMs received");
-  add_link_options(*interactive, args.link, true);
+  register_link_options(*interactive, args.link, true);
   interactive->footer(tc_syntax_help());
   app.require_subcommand(0, 1);
 }
