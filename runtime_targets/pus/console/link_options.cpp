@@ -13,7 +13,10 @@ void register_link_options(CLI::App& command, LinkOptions& options, bool port_re
   command.add_option("--host", options.host, "its IPv4 address")
       ->capture_default_str()
       ->type_name("ADDR");
-  command.add_option("--wait", options.wait_ms, "how long to receive TMs after the last TC (ms)")
+  command
+      .add_option(
+          "--wait", options.wait_ms,
+          "how long to receive TMs after the last TC of a script, after each TC interactively (ms)")
       ->capture_default_str()
       ->check(cli::integer_in(0, 3600000))
       ->type_name("MS");
