@@ -1,0 +1,153 @@
+// The proof loop: CI && II && bad to Z3; each satisfying state refined by a trap or handed to
+// the search.
+#include "fdir/prove/prover.h"
+
+#include <chrono>
+
+#include "engines/semantics/layout.h"
+#include "fdir/errors.h"
+#include "fdir/invariants/component_invariants.h"
+#include "fdir/invariants/trap_invariants.h"
+#include "fdir/net/petri_net.h"
+#include "fdir/prove/deadlock_predicate.h"
+#include "fdir/prove/property_encoding.h"
+#include "fdir/smt/state_encoding.h"
+
+namespace smcbip::fdir {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+struct Prover::State {
+  State(const bipc::ir::System& system, unsigned iterations)
+      : net(build_petri_net(system)),
+        variables(context, system, net),
+        encoder(context),
+        components(variables, encoder, iterations),
+        invariant(context.bool_val(true)) {}
+  z3::context context;
+  PetriNet net;
+  StateEncoding variables;
+  CodeEncoder encoder;
+  ComponentInvariants components;
+  z3::expr invariant;                // CI and the traps found so far
+  std::optional<z3::expr> deadlock;  // DIS, once a query reads it
+  std::size_t traps = 0;
+  bool untimed = true;
+};
+
+Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
+    : system_(system), options_(options) {
+  state_ = std::make_unique<State>(system, options.component_iterations);
+  state_->invariant = state_->components.all();
+  engines::Layout layout;
+  engines::build_layout(system, layout);
+  state_->untimed = layout.clock_count == 0;
+}
+
+Prover::~Prover() = default;
+
+std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, QueryOutcome& out) {
+  State& s = *state_;
+  z3::solver solver(s.context);
+  solver.add(s.invariant);
+  solver.add(bad);
+  for (;;) {
+    const z3::check_result r = solver.check();
+    if (r == z3::unsat) return std::nullopt;
+    if (r == z3::unknown) {
+      out.note = "Z3 gave up: " + solver.reason_unknown();
+      return std::vector<std::string>{};
+    }
+    const z3::model model = solver.get_model();
+    std::vector<std::uint8_t> marking(s.net.places.size());
+    std::vector<std::string> candidate;
+    for (Index p = 0; p < marking.size(); ++p) {
+      marking[p] = model.eval(s.variables.place(p), true).is_true() ? 1 : 0;
+      if (marking[p]) candidate.push_back(s.net.places[p]);
+    }
+    const std::optional<std::vector<Index>> trap = excluding_trap(s.net, marking);
+    if (!trap || out.traps >= options_.max_traps) {
+      for (Index a = 0; a < system_.atoms.size(); ++a) {
+        for (const z3::expr& d : s.variables.data(a)) {
+          if (!d.is_int() && !d.is_bool()) continue;
+          candidate.push_back(d.decl().name().str() + " = " + model.eval(d, true).to_string());
+        }
+      }
+      return candidate;
+    }
+    z3::expr clause = s.context.bool_val(false);
+    for (Index p : *trap) clause = clause || s.variables.place(p);
+    solver.add(clause);
+    s.invariant = s.invariant && clause;
+    ++out.traps;
+    ++s.traps;
+  }
+}
+
+void Prover::search(const monitors::Query& query, const monitors::Bindings& constants,
+                    QueryOutcome& out) {
+  const bool all = query.kind == monitors::Query::Kind::Invariant;
+  const monitors::Formula& phi = *query.formula;
+  const StateTarget target = [&](const engines::Runtime& runtime,
+                                 const engines::StringPool& strings, bool deadlocked) {
+    return holds_in(phi, runtime, strings, constants, deadlocked) != all;
+  };
+  const SearchResult found =
+      search_state(system_, target, options_.explore_depth, options_.max_explored_states);
+  out.explored_states = found.states;
+  if (found.found) {
+    out.verdict = all ? Verdict::Fails : Verdict::Holds;
+    out.method = "trace";
+    out.trace = found.trace;
+  } else if (found.complete) {
+    out.verdict = all ? Verdict::Holds : Verdict::Fails;
+    out.method = "exploration";
+  } else {
+    out.note = "the candidate was not reached within " + std::to_string(options_.explore_depth) +
+               " steps (" + std::to_string(found.states) +
+               " states explored): it may be spurious; stronger invariants or a deeper "
+               "--explore-depth may decide";
+  }
+}
+
+QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Bindings& constants) {
+  State& s = *state_;
+  QueryOutcome out;
+  out.net_transitions = s.net.transitions.size();
+  out.component_invariants = s.components.data_invariants();
+  auto start = Clock::now();
+  if (!s.deadlock) s.deadlock = deadlock_predicate(s.variables, s.encoder);
+  const z3::expr phi = encode_formula(*query.formula, s.variables, constants, *s.deadlock);
+  const bool all = query.kind == monitors::Query::Kind::Invariant;
+  const z3::expr bad = all ? !phi : phi;
+  out.seconds_invariants = seconds_since(start);
+  start = Clock::now();
+  const std::optional<std::vector<std::string>> candidate = refute(bad, out);
+  out.seconds_smt = seconds_since(start);
+  if (!candidate) {
+    out.verdict = all ? Verdict::Holds : Verdict::Fails;
+    out.method = "invariants";
+    return out;
+  }
+  out.candidate = *candidate;
+  if (!s.untimed) {
+    out.note =
+        "the model has clocks: its invariants ignore them (sound) but the search for a "
+        "violating state, which would ignore time, is not made";
+    return out;
+  }
+  start = Clock::now();
+  search(query, constants, out);
+  out.seconds_search = seconds_since(start);
+  return out;
+}
+
+}  // namespace smcbip::fdir
