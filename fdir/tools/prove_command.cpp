@@ -40,7 +40,7 @@ void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutco
       << o.net_transitions << ")\n";
   if (!o.trace.empty()) {
     out << "  " << (q.kind == monitors::Query::Kind::Invariant ? "counterexample" : "witness")
-        << " (" << o.trace.size() - 1 << " steps):\n";
+        << " (" << o.trace.size() - 1 << (o.trace.size() == 2 ? " step" : " steps") << "):\n";
     print_trace(out, o.trace);
   }
   if (o.verdict == Verdict::Open) {
