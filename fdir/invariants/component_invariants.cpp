@@ -100,11 +100,15 @@ z3::expr ComponentInvariants::post(const Template& t, Index atom, const bipc::ir
     }
   }
   encoder_.statement(tr.action, frame);
+  // Every value the engines hold, before and after, and every unknown one, is a 64-bit integer.
   z3::expr body = before && guard;
   for (std::size_t k = 0; k < t.data.size(); ++k) {
-    if (tracked(t.type->data[k].type.kind)) body = body && t.primes[k] == frame.data[k];
+    if (!tracked(t.type->data[k].type.kind)) continue;
+    body = body && t.primes[k] == frame.data[k] && int64_bounds(t.data[k]) &&
+           int64_bounds(t.primes[k]);
   }
   z3::expr_vector vars = encoder_.fresh();
+  for (const z3::expr& v : vars) body = body && int64_bounds(v);
   for (const z3::expr& x : t.tracked_data) vars.push_back(x);
   z3::expr after = eliminate(c, vars, body);
   z3::expr_vector from = t.tracked_primes, to = t.tracked_data;

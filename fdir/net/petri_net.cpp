@@ -103,9 +103,22 @@ void add_transitions(const System& system, Index k, PetriNet& net, std::size_t m
   }
 }
 
+/// Atoms that wait inside an action (`resume`) have states between places, which the net does
+/// not have.
+void refuse_resumes(const bipc::ir::AtomType& type) {
+  for (const bipc::ir::Transition& t : type.transitions) {
+    if (t.resume) throw UnsupportedModel("prove does not handle resume yet", t.loc);
+  }
+  if (type.initial_resume) {
+    throw UnsupportedModel("prove does not handle resume yet (in the initial action of " +
+                           type.name + ")");
+  }
+}
+
 void add_places(const System& system, PetriNet& net) {
   for (Index a = 0; a < system.atoms.size(); ++a) {
     const bipc::ir::AtomType& type = system.atom_types[system.atoms[a].type];
+    refuse_resumes(type);
     net.first_place.push_back(static_cast<Index>(net.places.size()));
     for (const std::string& place : type.places) {
       net.places.push_back(system.root_name + "." + system.atoms[a].path + "." + place);

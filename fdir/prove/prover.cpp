@@ -47,6 +47,11 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
     : system_(system), options_(options) {
   state_ = std::make_unique<State>(system, options.component_iterations);
   state_->invariant = state_->components.all();
+  for (Index a = 0; a < system.atoms.size(); ++a) {
+    for (const z3::expr& d : state_->variables.data(a)) {
+      state_->invariant = state_->invariant && int64_bounds(d);
+    }
+  }
   engines::Layout layout;
   engines::build_layout(system, layout);
   state_->untimed = layout.clock_count == 0;

@@ -2,6 +2,8 @@
 // (jumps go forward only, so paths are finite), merged into if-then-else terms.
 #include "fdir/smt/code_encoding.h"
 
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace smcbip::fdir {
@@ -73,14 +75,27 @@ void CodeEncoder::store(const Instr& in, Path& path) {
   if (sort.is_bool() && value.is_bool()) path.data[in.index] = value;
 }
 
+z3::expr int64_bounds(const z3::expr& e) {
+  z3::context& c = e.ctx();
+  if (!e.is_int()) return c.bool_val(true);
+  return c.int_val(std::numeric_limits<std::int64_t>::min()) <= e &&
+         e <= c.int_val(std::numeric_limits<std::int64_t>::max());
+}
+
+z3::expr CodeEncoder::in_range(const z3::expr& exact) {
+  // The engines' integers wrap around on 64 bits: where the mathematical result leaves that
+  // range, the value is left unknown.
+  return z3::ite(int64_bounds(exact), exact, unknown(ValueKind::Int));
+}
+
 z3::expr CodeEncoder::arithmetic(Op op, const z3::expr& a, const z3::expr& b) {
   switch (op) {
     case Op::Add:
-      return a + b;
+      return in_range(a + b);
     case Op::Sub:
-      return a - b;
+      return in_range(a - b);
     case Op::Mul:
-      return a * b;
+      return in_range(a * b);
     case Op::Div:
     case Op::Mod: {
       // Z3's division is Euclidean, C++'s truncates: they agree on a >= 0 and b > 0.
@@ -143,7 +158,7 @@ void CodeEncoder::step(const Instr& in, const CodeFrame& frame, Path& path) {
       return;
     case Op::Neg: {
       const z3::expr a = pop();
-      path.stack.push_back(a.is_int() ? -a : unknown(in.kind));
+      path.stack.push_back(a.is_int() ? in_range(-a) : unknown(in.kind));
       return;
     }
     case Op::Not: {

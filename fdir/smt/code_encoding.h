@@ -25,7 +25,7 @@ struct CodeFrame {
 /// (floats, clocks, strings, calls of extern functions, bit operations, connector data) becomes
 /// a fresh unknown constant, listed in `fresh()`, so that every translation over-approximates
 /// the code's behaviour: a guard may then be true or false, a store writes any value.
-/// Integers are read as mathematical integers (no overflow).
+/// Integer results outside the 64 bits the engines wrap around on are unknown.
 class CodeEncoder {
  public:
   explicit CodeEncoder(z3::context& context) : context_(context), fresh_(context) {}
@@ -51,11 +51,15 @@ class CodeEncoder {
   void store(const bipc::ir::Instr& in, Path& path);
   z3::expr binary(const bipc::ir::Instr& in, const z3::expr& a, const z3::expr& b);
   z3::expr arithmetic(bipc::ir::Op op, const z3::expr& a, const z3::expr& b);
+  z3::expr in_range(const z3::expr& exact);
 
   z3::context& context_;
   z3::expr_vector fresh_;
   unsigned counter_ = 0;
 };
+
+/// `e` (an integer term) lies in the engines' 64-bit range; true for other sorts.
+z3::expr int64_bounds(const z3::expr& e);
 
 /// The constant value as a term (Bool or Int; other kinds are unknown to `encoder`).
 z3::expr value_term(CodeEncoder& encoder, const bipc::ir::Value& value);

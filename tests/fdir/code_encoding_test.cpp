@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
+
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::fdir {
@@ -71,7 +74,12 @@ TEST_F(CodeEncoding, AnActionsBranchesBecomeIfThenElseAndFloatsStayUnknown) {
   CodeFrame after = frame;
   encoder.statement(transition().action, after);
   const z3::expr x = c.int_const("x"), y = c.int_const("y"), b = c.bool_const("b");
-  EXPECT_TRUE(valid(c, after.data[1] == z3::ite(x > y, x - y, y * 2)));
+  const z3::expr small = x >= -1000 && x <= 1000 && y >= -1000 && y <= 1000;
+  EXPECT_TRUE(valid(c, z3::implies(small, after.data[1] == z3::ite(x > y, x - y, y * 2))));
+  // Beyond 64 bits the engines wrap around: the encoding does not claim the exact value.
+  EXPECT_FALSE(
+      valid(c, z3::implies(y == c.int_val(std::numeric_limits<std::int64_t>::max()) && x < y,
+                           after.data[1] == y * 2)));
   EXPECT_TRUE(valid(c, after.data[2] == (!b && x >= 0)));
   EXPECT_TRUE(valid(c, z3::implies(x >= 0, after.data[0] == x / 3)));
   // x / 3 on a negative x truncates in C++: the encoding leaves it unknown rather than wrong.
