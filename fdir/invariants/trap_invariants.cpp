@@ -1,6 +1,7 @@
 // The largest trap inside a set of places, by removing places until the trap condition holds.
 #include "fdir/invariants/trap_invariants.h"
 
+#include <algorithm>
 #include <deque>
 
 namespace smcbip::fdir {
@@ -39,15 +40,43 @@ std::vector<Index> largest_trap(const PetriNet& net, const std::vector<std::uint
   return trap;
 }
 
-std::optional<std::vector<Index>> excluding_trap(const PetriNet& net,
-                                                 const std::vector<std::uint8_t>& marking) {
+std::vector<Index> trap_around(const PetriNet& net, const std::vector<std::uint8_t>& within,
+                               Index place) {
+  std::vector<std::uint8_t> in(net.places.size(), 0);
+  in[place] = 1;
+  std::vector<Index> trap{place};
+  for (bool grown = true; grown;) {
+    grown = false;
+    for (const NetTransition& t : net.transitions) {
+      bool takes = false, puts = false;
+      for (Index p : t.pre) takes = takes || in[p];
+      for (Index p : t.post) puts = puts || in[p];
+      if (!takes || puts) continue;
+      for (Index p : t.post) {
+        if (within[p] && !in[p]) in[p] = 1, trap.push_back(p);
+      }
+      grown = true;
+    }
+  }
+  std::sort(trap.begin(), trap.end());
+  return trap;
+}
+
+std::vector<std::vector<Index>> excluding_traps(const PetriNet& net,
+                                                const std::vector<std::uint8_t>& marking,
+                                                std::size_t limit) {
   std::vector<std::uint8_t> unmarked(marking.size());
   for (std::size_t p = 0; p < marking.size(); ++p) unmarked[p] = marking[p] ? 0 : 1;
-  std::vector<Index> trap = largest_trap(net, unmarked);
-  for (Index p : trap) {
-    if (net.initial[p]) return trap;
+  std::vector<std::uint8_t> largest(marking.size(), 0);
+  for (Index p : largest_trap(net, unmarked)) largest[p] = 1;
+  std::vector<std::vector<Index>> traps;
+  std::vector<std::uint8_t> covered(marking.size(), 0);
+  for (Index p = 0; p < largest.size() && traps.size() < limit; ++p) {
+    if (!largest[p] || !net.initial[p] || covered[p]) continue;
+    traps.push_back(trap_around(net, largest, p));
+    for (Index q : traps.back()) covered[q] = 1;
   }
-  return std::nullopt;
+  return traps;
 }
 
 }  // namespace smcbip::fdir

@@ -16,10 +16,18 @@ namespace smcbip::fdir {
 /// `allowed` is inside the result.
 std::vector<Index> largest_trap(const PetriNet& net, const std::vector<std::uint8_t>& allowed);
 
-/// A trap initially marked and wholly unmarked in `marking` (per global place), which excludes
-/// that marking from the reachable ones; nullopt when there is none (no initially marked trap
-/// excludes it).
-std::optional<std::vector<Index>> excluding_trap(const PetriNet& net,
-                                                 const std::vector<std::uint8_t>& marking);
+/// A trap inside the trap `within` (per global place) containing `place`: grown from {place} by
+/// adding, for each transition that takes from the set and puts nothing back, its output places
+/// in `within` (there is one, `within` being a trap). Small traps make strong invariants.
+std::vector<Index> trap_around(const PetriNet& net, const std::vector<std::uint8_t>& within,
+                               Index place);
+
+/// Traps initially marked and wholly unmarked in `marking` (per global place), each of which
+/// excludes that marking from the reachable ones: one small trap around each initially marked
+/// place of the largest trap of the unmarked places, at most `limit`, without repetition. Empty
+/// when no initially marked trap excludes the marking.
+std::vector<std::vector<Index>> excluding_traps(const PetriNet& net,
+                                                const std::vector<std::uint8_t>& marking,
+                                                std::size_t limit);
 
 }  // namespace smcbip::fdir

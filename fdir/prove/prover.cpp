@@ -19,6 +19,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// Traps added against one candidate (each excludes it; several make fewer rounds).
+constexpr std::size_t kTrapsPerCandidate = 64;
+
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -78,22 +81,26 @@ std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, Quer
       marking[p] = model.eval(s.variables.place(p), true).is_true() ? 1 : 0;
       if (marking[p]) candidate.push_back(s.net.places[p]);
     }
-    const std::optional<std::vector<Index>> trap = excluding_trap(s.net, marking);
-    if (!trap || out.traps >= options_.max_traps) {
+    const std::vector<std::vector<Index>> traps =
+        excluding_traps(s.net, marking, kTrapsPerCandidate);
+    if (traps.empty() || out.traps >= options_.max_traps) {
       for (Index a = 0; a < system_.atoms.size(); ++a) {
         for (const z3::expr& d : s.variables.data(a)) {
           if (!d.is_int() && !d.is_bool()) continue;
           candidate.push_back(d.decl().name().str() + " = " + model.eval(d, true).to_string());
         }
       }
+      if (!traps.empty()) out.note = "the limit on traps was reached";
       return candidate;
     }
-    z3::expr clause = s.context.bool_val(false);
-    for (Index p : *trap) clause = clause || s.variables.place(p);
-    solver.add(clause);
-    s.invariant = s.invariant && clause;
-    ++out.traps;
-    ++s.traps;
+    for (const std::vector<Index>& trap : traps) {
+      z3::expr clause = s.context.bool_val(false);
+      for (Index p : trap) clause = clause || s.variables.place(p);
+      solver.add(clause);
+      s.invariant = s.invariant && clause;
+      ++out.traps;
+      ++s.traps;
+    }
   }
 }
 

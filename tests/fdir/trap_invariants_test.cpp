@@ -59,16 +59,35 @@ TEST(Traps, TheLargestTrapInsideASetIsATrapContainingEveryOther) {
   }
 }
 
+TEST(Traps, ATrapGrownAroundAPlaceIsATrapInsideTheLargest) {
+  std::mt19937 random(11);
+  for (int round = 0; round < 200; ++round) {
+    const std::size_t places = 7;
+    const PetriNet net = random_net(random, places, 6);
+    const std::vector<std::uint8_t> all(places, 1);
+    std::vector<std::uint8_t> largest(places);
+    for (Index p : largest_trap(net, all)) largest[p] = 1;
+    for (Index p = 0; p < places; ++p) {
+      if (!largest[p]) continue;
+      std::vector<std::uint8_t> grown(places);
+      for (Index q : trap_around(net, largest, p)) grown[q] = 1;
+      EXPECT_TRUE(grown[p]);
+      EXPECT_TRUE(is_trap(net, grown));
+      for (Index q = 0; q < places; ++q) EXPECT_TRUE(!grown[q] || largest[q]);
+    }
+  }
+}
+
 TEST(Traps, AMarkingIsExcludedOnlyByAnInitiallyMarkedTrapItLeavesEmpty) {
   // Two places exchanging one token: {a, b} is a trap, marked initially through a.
   PetriNet net;
   net.places = {"a", "b", "c"};
   net.initial = {1, 0, 0};
   net.transitions = {{0, {}, {0}, {1}}, {0, {}, {1}, {0}}, {0, {}, {2}, {2}}};
-  const auto trap = excluding_trap(net, {0, 0, 1});
-  ASSERT_TRUE(trap);
-  EXPECT_EQ(*trap, (std::vector<Index>{0, 1}));
-  EXPECT_FALSE(excluding_trap(net, {0, 1, 0}));  // b is marked: {a, b} does not exclude it
+  const auto traps = excluding_traps(net, {0, 0, 1}, 10);
+  ASSERT_EQ(traps.size(), 1u);
+  EXPECT_EQ(traps.front(), (std::vector<Index>{0, 1}));
+  EXPECT_TRUE(excluding_traps(net, {0, 1, 0}, 10).empty());  // b marked: {a, b} excludes nothing
 }
 
 }  // namespace
