@@ -2,6 +2,7 @@
 // the search.
 #include "fdir/prove/prover.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "engines/semantics/layout.h"
@@ -21,6 +22,9 @@ using Clock = std::chrono::steady_clock;
 
 /// Traps added against one candidate (each excludes it; several make fewer rounds).
 constexpr std::size_t kTrapsPerCandidate = 64;
+
+/// States the breadth-first search keeps before the search heads for the candidate instead.
+constexpr std::uint64_t kBreadthStates = 20'000;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -62,7 +66,7 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
 
 Prover::~Prover() = default;
 
-std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, QueryOutcome& out) {
+std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcome& out) {
   State& s = *state_;
   z3::solver solver(s.context);
   solver.add(s.invariant);
@@ -72,7 +76,7 @@ std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, Quer
     if (r == z3::unsat) return std::nullopt;
     if (r == z3::unknown) {
       out.note = "Z3 gave up: " + solver.reason_unknown();
-      return std::vector<std::string>{};
+      return Candidate{};
     }
     const z3::model model = solver.get_model();
     std::vector<std::uint8_t> marking(s.net.places.size());
@@ -91,7 +95,7 @@ std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, Quer
         }
       }
       if (!traps.empty()) out.note = "the limit on traps was reached";
-      return candidate;
+      return Candidate{marking, candidate};
     }
     for (const std::vector<Index>& trap : traps) {
       z3::expr clause = s.context.bool_val(false);
@@ -105,16 +109,37 @@ std::optional<std::vector<std::string>> Prover::refute(const z3::expr& bad, Quer
 }
 
 void Prover::search(const monitors::Query& query, const monitors::Bindings& constants,
-                    QueryOutcome& out) {
+                    const Candidate& candidate, QueryOutcome& out) {
   const bool all = query.kind == monitors::Query::Kind::Invariant;
   const monitors::Formula& phi = *query.formula;
   const StateTarget target = [&](const engines::Runtime& runtime,
                                  const engines::StringPool& strings, bool deadlocked) {
     return holds_in(phi, runtime, strings, constants, deadlocked) != all;
   };
-  const SearchResult found =
-      search_state(system_, target, options_.explore_depth, options_.max_explored_states);
+  SearchLimits limits{options_.explore_depth,
+                      std::min<std::uint64_t>(options_.max_explored_states, kBreadthStates),
+                      {}};
+  SearchResult found = search_state(system_, target, limits);
   out.explored_states = found.states;
+  if (!found.found && !found.complete && !candidate.marking.empty()) {
+    // Breadth first was cut short: head for the candidate, counting the places it differs in.
+    const PetriNet& net = state_->net;
+    limits.max_states = options_.max_explored_states;
+    limits.guide = [&](const engines::RunState& state, const engines::Layout& layout) {
+      std::size_t distance = 0;
+      for (Index a = 0; a < net.first_place.size(); ++a) {
+        const Index end = a + 1 < net.first_place.size() ? net.first_place[a + 1]
+                                                         : static_cast<Index>(net.places.size());
+        for (Index p = net.first_place[a]; p < end; ++p) {
+          const bool marked = state.marking[layout.atom_places[a] + (p - net.first_place[a])];
+          distance += marked != (candidate.marking[p] != 0) ? 1 : 0;
+        }
+      }
+      return distance;
+    };
+    found = search_state(system_, target, limits);
+    out.explored_states += found.states;
+  }
   if (found.found) {
     out.verdict = all ? Verdict::Fails : Verdict::Holds;
     out.method = "trace";
@@ -124,7 +149,7 @@ void Prover::search(const monitors::Query& query, const monitors::Bindings& cons
     out.method = "exploration";
   } else {
     out.note = "the candidate was not reached within " + std::to_string(options_.explore_depth) +
-               " steps (" + std::to_string(found.states) +
+               " steps (" + std::to_string(out.explored_states) +
                " states explored): it may be spurious; stronger invariants or a deeper "
                "--explore-depth may decide";
   }
@@ -142,14 +167,14 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   const z3::expr bad = all ? !phi : phi;
   out.seconds_invariants = seconds_since(start);
   start = Clock::now();
-  const std::optional<std::vector<std::string>> candidate = refute(bad, out);
+  const std::optional<Candidate> candidate = refute(bad, out);
   out.seconds_smt = seconds_since(start);
   if (!candidate) {
     out.verdict = all ? Verdict::Holds : Verdict::Fails;
     out.method = "invariants";
     return out;
   }
-  out.candidate = *candidate;
+  out.candidate = candidate->text;
   if (!s.untimed) {
     out.note =
         "the model has clocks: its invariants ignore them (sound) but the search for a "
@@ -157,7 +182,7 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
     return out;
   }
   start = Clock::now();
-  search(query, constants, out);
+  search(query, constants, *candidate, out);
   out.seconds_search = seconds_since(start);
   return out;
 }

@@ -27,7 +27,7 @@ struct ProveOptions {
   /// The search for a violating state stops at this many steps from the initial state...
   std::uint64_t explore_depth = 1000;
   /// ... and keeps at most this many states.
-  std::uint64_t max_explored_states = 1'000'000;
+  std::uint64_t max_explored_states = 200'000;
   /// Traps added against candidates before a query is left open.
   std::size_t max_traps = 10'000;
 };
@@ -70,11 +70,18 @@ class Prover {
 
  private:
   struct State;
+  /// A state of the invariants violating the query: its marking (per place of the net, empty
+  /// when Z3 gave up) and its text.
+  struct Candidate {
+    std::vector<std::uint8_t> marking;
+    std::vector<std::string> text;
+  };
   /// The SMT loop against `bad`: nullopt when no state of the invariants is bad (proved),
-  /// otherwise the candidate (empty when Z3 gave up).
-  std::optional<std::vector<std::string>> refute(const z3::expr& bad, QueryOutcome& outcome);
+  /// otherwise the candidate.
+  std::optional<Candidate> refute(const z3::expr& bad, QueryOutcome& outcome);
+  /// Breadth first, then (when cut short) best first towards the candidate's marking.
   void search(const monitors::Query& query, const monitors::Bindings& constants,
-              QueryOutcome& outcome);
+              const Candidate& candidate, QueryOutcome& outcome);
 
   const bipc::ir::System& system_;
   ProveOptions options_;

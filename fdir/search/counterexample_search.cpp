@@ -1,8 +1,12 @@
 // Breadth-first search over the engines' semantics, keeping each state's parent for the trace.
 #include "fdir/search/counterexample_search.h"
 
+#include <functional>
 #include <memory>
+#include <optional>
+#include <queue>
 #include <sstream>
+#include <tuple>
 #include <unordered_set>
 
 #include "engines/explore.h"
@@ -82,59 +86,107 @@ std::vector<TraceState> trace_to(engines::Runtime& runtime, const std::vector<No
   return trace;
 }
 
+/// The search: nodes kept with their parents, expanded breadth first or, with a guide, nearest
+/// to the guide's goal first (ties: shallowest, then first found).
+class Search {
+ public:
+  Search(Engine& engine, const StateTarget& target, const SearchLimits& limits)
+      : engine_(engine), runtime_(*engine.runtime), target_(target), limits_(limits) {}
+
+  SearchResult run() {
+    SearchResult result;
+    result.complete = true;
+    add({runtime_.state(), 0, 0, ""});
+    while (std::optional<std::size_t> k = next()) {
+      ++result.states;
+      if (visit(*k, result)) {
+        result.found = true;
+        result.trace = trace_to(runtime_, nodes_, *k);
+        return result;
+      }
+    }
+    result.complete = result.complete && result.errors == 0;
+    return result;
+  }
+
+ private:
+  using Rank = std::tuple<std::size_t, std::uint64_t, std::size_t>;  // distance, depth, node
+
+  void add(Node node) {
+    nodes_.push_back(std::move(node));
+    if (limits_.guide) {
+      const Node& n = nodes_.back();
+      queue_.emplace(limits_.guide(n.state, engine_.layout), n.depth, nodes_.size() - 1);
+    }
+  }
+
+  std::optional<std::size_t> next() {
+    if (!limits_.guide) {
+      if (breadth_ == nodes_.size()) return std::nullopt;
+      return breadth_++;
+    }
+    if (queue_.empty()) return std::nullopt;
+    const std::size_t k = std::get<2>(queue_.top());
+    queue_.pop();
+    return k;
+  }
+
+  /// Whether node `k` is a target; otherwise adds its successors not seen before.
+  bool visit(std::size_t k, SearchResult& result) {
+    const engines::RunState state = nodes_[k].state;
+    if (!runtime_.restore(state) || !runtime_.compute_items()) {
+      ++result.errors;
+      return false;
+    }
+    const std::vector<engines::Item> items = runtime_.items();
+    const bool deadlocked =
+        items.empty() && runtime_.wait_interval().right == engines::kPlusInfinity;
+    if (target_(runtime_, engine_.strings, deadlocked)) return true;
+    if (nodes_[k].depth == limits_.max_depth) {
+      result.complete = result.complete && items.empty();
+      return false;
+    }
+    for (const engines::Item& item : items) {
+      if (!runtime_.restore(state) || !runtime_.compute_items()) break;
+      const std::string fired = engines::item_text(runtime_, item, false);
+      if (!runtime_.execute(item, state.now) || !runtime_.resume_atoms(state.now)) {
+        ++result.errors;
+        continue;
+      }
+      engines::RunState next = runtime_.state();
+      next.now = state.now;
+      std::string key = engines::state_key(next);
+      if (seen_.contains(key)) continue;
+      if (seen_.size() >= limits_.max_states) {
+        result.complete = false;
+        continue;
+      }
+      seen_.insert(std::move(key));
+      add({std::move(next), k, nodes_[k].depth + 1, fired});
+    }
+    return false;
+  }
+
+  Engine& engine_;
+  engines::Runtime& runtime_;
+  const StateTarget& target_;
+  const SearchLimits& limits_;
+  std::vector<Node> nodes_;
+  std::size_t breadth_ = 0;
+  std::priority_queue<Rank, std::vector<Rank>, std::greater<Rank>> queue_;
+  std::unordered_set<std::string> seen_;
+};
+
 }  // namespace
 
 SearchResult search_state(const bipc::ir::System& system, const StateTarget& target,
-                          std::uint64_t max_depth, std::uint64_t max_states) {
+                          const SearchLimits& limits) {
   Engine engine(system);
   engines::Runtime& runtime = *engine.runtime;
   if (!runtime.initialize() || !runtime.resume_atoms(0)) {
     throw UnsupportedModel("the model's initialisation fails: " + runtime.error().message);
   }
-  SearchResult result;
-  result.complete = true;
-  std::vector<Node> nodes{{runtime.state(), 0, 0, ""}};
-  std::unordered_set<std::string> seen{engines::state_key(runtime.state())};
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    ++result.states;
-    const engines::RunState state = nodes[k].state;
-    if (!runtime.restore(state) || !runtime.compute_items()) {
-      ++result.errors;
-      continue;
-    }
-    const std::vector<engines::Item> items = runtime.items();
-    const bool deadlocked =
-        items.empty() && runtime.wait_interval().right == engines::kPlusInfinity;
-    if (target(runtime, engine.strings, deadlocked)) {
-      result.found = true;
-      result.trace = trace_to(runtime, nodes, k);
-      return result;
-    }
-    if (nodes[k].depth == max_depth) {
-      result.complete = result.complete && items.empty();
-      continue;
-    }
-    for (const engines::Item& item : items) {
-      if (!runtime.restore(state) || !runtime.compute_items()) break;
-      const std::string fired = engines::item_text(runtime, item, false);
-      if (!runtime.execute(item, state.now) || !runtime.resume_atoms(state.now)) {
-        ++result.errors;
-        continue;
-      }
-      engines::RunState next = runtime.state();
-      next.now = state.now;
-      std::string key = engines::state_key(next);
-      if (seen.contains(key)) continue;
-      if (seen.size() >= max_states) {
-        result.complete = false;
-        continue;
-      }
-      seen.insert(std::move(key));
-      nodes.push_back({std::move(next), k, nodes[k].depth + 1, fired});
-    }
-  }
-  result.complete = result.complete && result.errors == 0;
-  return result;
+  return Search(engine, target, limits).run();
 }
 
 }  // namespace smcbip::fdir

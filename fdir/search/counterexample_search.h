@@ -34,11 +34,20 @@ struct SearchResult {
 using StateTarget = std::function<bool(const engines::Runtime& runtime,
                                        const engines::StringPool& strings, bool deadlocked)>;
 
-/// Breadth-first search from the initial state, as the engines' exploration (explore.h)
-/// visits states, for the first state that is a target: the shortest trace to one. Explores at
-/// most `max_depth` steps and keeps at most `max_states` states. Throws UnsupportedModel when
-/// the model cannot be run (e.g. its initialisation fails).
+/// How far a search goes, and where it heads.
+struct SearchLimits {
+  std::uint64_t max_depth = 1000;     // steps from the initial state
+  std::uint64_t max_states = 200000;  // states kept
+  /// Without a guide the search is breadth first (the shortest trace); with one, the state of
+  /// least guide value is expanded first (shallowest among equals): a best-first search towards
+  /// a goal such as the prover's candidate.
+  std::function<std::size_t(const engines::RunState& state, const engines::Layout& layout)> guide;
+};
+
+/// Searches from the initial state, with the engines' semantics as their exploration
+/// (explore.h) follows it, for a state that is a target. Throws UnsupportedModel when the model
+/// cannot be run (e.g. its initialisation fails).
 SearchResult search_state(const bipc::ir::System& system, const StateTarget& target,
-                          std::uint64_t max_depth, std::uint64_t max_states);
+                          const SearchLimits& limits);
 
 }  // namespace smcbip::fdir
