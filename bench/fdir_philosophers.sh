@@ -2,7 +2,7 @@
 # Times `smcbip prove` on the dining philosophers taking both forks together (deadlock-free) and
 # one at a time (deadlocking), for N philosophers, N given on the command line.
 #
-# Usage: bench/fdir_philosophers.sh BIN_DIR N...
+# Usage: [VARIANTS="together"] bench/fdir_philosophers.sh BIN_DIR N...
 # Prints one line per model: N, variant, verdict, exit status and seconds.
 set -euo pipefail
 
@@ -67,7 +67,7 @@ write_model() {
 echo "A[] !deadlock" > "$work/deadlock.mtl"
 printf "%6s %-14s %-8s %4s %8s\n" N variant verdict exit seconds
 for n in "$@"; do
-  for variant in together one_at_a_time; do
+  for variant in ${VARIANTS:-together one_at_a_time}; do
     write_model "$variant" "$n" > "$work/model.bip"
     start=$(date +%s.%N)
     status=0

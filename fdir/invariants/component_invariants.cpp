@@ -199,9 +199,9 @@ z3::expr ComponentInvariants::of_atom(Index atom) {
 }
 
 z3::expr ComponentInvariants::all() {
-  z3::expr out = state_.context().bool_val(true);
-  for (Index a = 0; a < state_.system().atoms.size(); ++a) out = out && of_atom(a);
-  return out;
+  z3::expr_vector all(state_.context());
+  for (Index a = 0; a < state_.system().atoms.size(); ++a) all.push_back(of_atom(a));
+  return z3::mk_and(all);
 }
 
 }  // namespace smcbip::fdir

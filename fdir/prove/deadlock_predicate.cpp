@@ -61,11 +61,11 @@ z3::expr interaction_enabled(const StateEncoding& state, CodeEncoder& encoder, I
 }
 
 z3::expr deadlock_predicate(const StateEncoding& state, CodeEncoder& encoder) {
-  z3::expr out = state.context().bool_val(true);
+  z3::expr_vector none(state.context());
   for (Index k = 0; k < state.net().interactions.size(); ++k) {
-    out = out && !interaction_enabled(state, encoder, k);
+    none.push_back(!interaction_enabled(state, encoder, k));
   }
-  return out;
+  return z3::mk_and(none);
 }
 
 }  // namespace smcbip::fdir

@@ -38,13 +38,15 @@ struct Prover::State {
         variables(context, system, net),
         encoder(context),
         components(variables, encoder, iterations),
-        invariant(context.bool_val(true)) {}
+        invariant(context) {}
   z3::context context;
   PetriNet net;
   StateEncoding variables;
   CodeEncoder encoder;
   ComponentInvariants components;
-  z3::expr invariant;                // CI and the traps found so far
+  /// CI and the traps found so far, as a list: a conjunction built clause by clause nests
+  /// as deep as it is long, which Z3 is slow to free.
+  z3::expr_vector invariant;
   std::optional<z3::expr> deadlock;  // DIS, once a query reads it
   std::size_t traps = 0;
   bool untimed = true;
@@ -53,10 +55,10 @@ struct Prover::State {
 Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
     : system_(system), options_(options) {
   state_ = std::make_unique<State>(system, options.component_iterations);
-  state_->invariant = state_->components.all();
   for (Index a = 0; a < system.atoms.size(); ++a) {
+    state_->invariant.push_back(state_->components.of_atom(a));
     for (const z3::expr& d : state_->variables.data(a)) {
-      state_->invariant = state_->invariant && int64_bounds(d);
+      state_->invariant.push_back(int64_bounds(d));
     }
   }
   engines::Layout layout;
@@ -69,7 +71,7 @@ Prover::~Prover() = default;
 std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcome& out) {
   State& s = *state_;
   z3::solver solver(s.context);
-  solver.add(s.invariant);
+  for (const z3::expr& clause : s.invariant) solver.add(clause);
   solver.add(bad);
   for (;;) {
     const z3::check_result r = solver.check();
@@ -98,10 +100,11 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
       return Candidate{marking, candidate};
     }
     for (const std::vector<Index>& trap : traps) {
-      z3::expr clause = s.context.bool_val(false);
-      for (Index p : trap) clause = clause || s.variables.place(p);
+      z3::expr_vector places(s.context);
+      for (Index p : trap) places.push_back(s.variables.place(p));
+      const z3::expr clause = z3::mk_or(places);
       solver.add(clause);
-      s.invariant = s.invariant && clause;
+      s.invariant.push_back(clause);
       ++out.traps;
       ++s.traps;
     }
