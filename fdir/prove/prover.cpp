@@ -21,7 +21,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// Traps added against one candidate (each excludes it; several make fewer rounds).
-constexpr std::size_t kTrapsPerCandidate = 64;
+constexpr std::size_t kTrapsPerCandidate = 4096;
 
 /// States the breadth-first search keeps before the search heads for the candidate instead.
 constexpr std::uint64_t kBreadthStates = 20'000;

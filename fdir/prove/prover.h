@@ -29,7 +29,7 @@ struct ProveOptions {
   /// ... and keeps at most this many states.
   std::uint64_t max_explored_states = 200'000;
   /// Traps added against candidates before a query is left open.
-  std::size_t max_traps = 10'000;
+  std::size_t max_traps = 1'000'000;
 };
 
 enum class Verdict : std::uint8_t { Holds, Fails, Open };
