@@ -73,7 +73,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
   z3::solver solver(s.context);
   for (const z3::expr& clause : s.invariant) solver.add(clause);
   solver.add(bad);
-  for (;;) {
+  for (std::size_t added = 0;;) {
     const z3::check_result r = solver.check();
     if (r == z3::unsat) return std::nullopt;
     if (r == z3::unknown) {
@@ -89,7 +89,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
     }
     const std::vector<std::vector<Index>> traps =
         excluding_traps(s.net, marking, kTrapsPerCandidate);
-    if (traps.empty() || out.traps >= options_.max_traps) {
+    if (traps.empty() || added >= options_.max_traps) {
       for (Index a = 0; a < system_.atoms.size(); ++a) {
         for (const z3::expr& d : s.variables.data(a)) {
           if (!d.is_int() && !d.is_bool()) continue;
@@ -105,7 +105,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
       const z3::expr clause = z3::mk_or(places);
       solver.add(clause);
       s.invariant.push_back(clause);
-      ++out.traps;
+      ++added;
       ++s.traps;
     }
   }
@@ -151,10 +151,11 @@ void Prover::search(const monitors::Query& query, const monitors::Bindings& cons
     out.verdict = all ? Verdict::Holds : Verdict::Fails;
     out.method = "exploration";
   } else {
-    out.note = "the candidate was not reached within " + std::to_string(options_.explore_depth) +
-               " steps (" + std::to_string(out.explored_states) +
-               " states explored): it may be spurious; stronger invariants or a deeper "
-               "--explore-depth may decide";
+    out.note += std::string(out.note.empty() ? "" : "; ") +
+                "the candidate was not reached within " + std::to_string(options_.explore_depth) +
+                " steps (" + std::to_string(out.explored_states) +
+                " states explored): it may be spurious; stronger invariants or a deeper "
+                "--explore-depth may decide";
   }
 }
 
@@ -172,6 +173,7 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   start = Clock::now();
   const std::optional<Candidate> candidate = refute(bad, out);
   out.seconds_smt = seconds_since(start);
+  out.traps = s.traps;
   if (!candidate) {
     out.verdict = all ? Verdict::Holds : Verdict::Fails;
     out.method = "invariants";

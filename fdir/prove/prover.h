@@ -41,7 +41,7 @@ struct QueryOutcome {
   /// the query), `trace` (a reachable state violating it, or the witness of E<>), `exploration`
   /// (every reachable state was examined), `none` (open).
   std::string method = "none";
-  std::size_t traps = 0;                 // trap invariants used for this query
+  std::size_t traps = 0;  // trap invariants known when the query was decided (shared by queries)
   std::size_t component_invariants = 0;  // atoms with a data invariant
   std::size_t net_transitions = 0;
   /// The last candidate state Z3 gave (marked places and data), when the invariants did not
