@@ -118,6 +118,11 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
       ->check(cli::integer_in(0, 100))
       ->option_text("N (default: " + std::to_string(o.component_iterations) + ")");
   cli::add_json_flag(command, prove.json);
+  command.footer(
+      "Priorities are dropped and clocks ignored by the invariants, which over-approximates the "
+      "reachable states (sound). On a model with clocks no search for a counterexample is made: "
+      "a candidate leaves the query open. Exit: 0 every query holds, 1 one does not, 4 one is "
+      "left open, 2 bad input, 3 internal error. See docs/prove.md.");
 }
 
 int run_prove(const ProveCommand& prove) {
