@@ -59,12 +59,38 @@ struct ComponentInvariants::Template {
   z3::expr_vector tracked_data, tracked_primes;
 };
 
+namespace {
+
+/// Whether some interaction's `down` of connector type `type` stores into port parameter
+/// `param`'s data.
+bool down_writes(const bipc::ir::ConnectorType& type, Index param) {
+  for (const bipc::ir::InteractionCode& code : type.interactions) {
+    for (const bipc::ir::Instr& in : code.down.instrs) {
+      if (in.op == bipc::ir::Op::Store && in.scope == bipc::ir::Scope::PortParam &&
+          in.index == param) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 ComponentInvariants::ComponentInvariants(const StateEncoding& state, CodeEncoder& encoder,
                                          unsigned iterations)
     : state_(state), encoder_(encoder), iterations_(iterations) {
-  for (const bipc::ir::ConnectorType& type : state.system().connector_types) {
-    for (const bipc::ir::InteractionCode& code : type.interactions) {
-      if (!code.down.empty()) connectors_write_ = true;
+  const bipc::ir::System& system = state.system();
+  for (const bipc::ir::AtomInstance& atom : system.atoms) {
+    written_.emplace_back(system.atom_types[atom.type].ports.size(), 0);
+  }
+  for (const bipc::ir::ConnectorInstance& c : system.connectors) {
+    const bipc::ir::ConnectorType& type = system.connector_types[c.type];
+    for (Index param = 0; param < c.bound.size(); ++param) {
+      if (!down_writes(type, param)) continue;
+      for (const bipc::ir::PortRef& ref : c.bound[param]) {
+        if (ref.kind == bipc::ir::PortRef::Kind::Atom) written_[ref.instance][ref.port] = 1;
+      }
     }
   }
 }
@@ -94,7 +120,7 @@ z3::expr ComponentInvariants::post(const Template& t, Index atom, const bipc::ir
   frame.params = &state_.system().atoms[atom].params;
   frame.data = t.data;
   const z3::expr guard = encoder_.expression(tr.guard, frame);
-  if (tr.port != bipc::ir::kNone && connectors_write_) {
+  if (tr.port != bipc::ir::kNone && written_[atom][tr.port]) {
     for (Index slot : t.type->ports[tr.port].data) {
       frame.data[slot] = encoder_.unknown(t.type->data[slot].type.kind);
     }
@@ -165,7 +191,8 @@ z3::expr ComponentInvariants::of_atom(Index atom) {
   const bipc::ir::AtomType& type = state_.system().atom_types[instance.type];
   if (!bipc::ir::is_state_machine(type)) return c.bool_val(true);
   const Template t = compute(atom);
-  const std::string key = template_key(instance);
+  std::string key = template_key(instance);
+  for (std::uint8_t w : written_[atom]) key += w ? 'w' : '-';
   auto cached = cache_.find(key);
   if (cached == cache_.end()) {
     z3::expr invariant = exactly_one(c, t.places);

@@ -5,6 +5,7 @@
 
 #include <z3++.h>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -22,8 +23,8 @@ z3::expr eliminate(z3::context& context, const z3::expr_vector& vars, const z3::
 /// phi_l^0 = true at every place l, and phi_l^(k+1) = init_l || OR over the transitions t from
 /// l' to l of post_t(phi_l'^k). Each iterate contains the reachable data at l (the reachable
 /// set is below the greatest fixpoint), so stopping after any number of iterations is sound.
-/// A transition's post-condition havocs the data a connector may write through its port
-/// before the action (data transfer is not followed), and reads clocks and floats as unknown.
+/// A transition's post-condition havocs the data a connector's `down` may write through its
+/// port before the action (data transfer is not followed), and reads clocks and floats as unknown.
 class ComponentInvariants {
  public:
   ComponentInvariants(const StateEncoding& state, CodeEncoder& encoder, unsigned iterations);
@@ -47,7 +48,8 @@ class ComponentInvariants {
   const StateEncoding& state_;
   CodeEncoder& encoder_;
   unsigned iterations_;
-  bool connectors_write_ = false;  // some interaction has a `down`: port data may be written
+  /// Per atom and port: some connector's `down` writes the port's data.
+  std::vector<std::vector<std::uint8_t>> written_;
   std::map<std::string, z3::expr> cache_;  // by type and parameters, over template variables
   std::size_t data_invariants_ = 0;
 };
