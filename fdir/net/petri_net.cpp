@@ -138,6 +138,12 @@ PetriNet build_petri_net(const System& system, std::size_t max_transitions) {
   if (!layout.extern_ports.empty()) {
     throw UnsupportedModel("prove does not handle extern ports yet");
   }
+  for (const bipc::ir::ConnectorInstance& c : system.connectors) {
+    if (system.connector_types[c.type].export_name) {
+      throw UnsupportedModel("connector " + c.path +
+                             " exports a port: prove does not handle hierarchical connectors yet");
+    }
+  }
   PetriNet net;
   add_places(system, net);
   for (Index c : layout.listed_connectors) add_connector(system, c, net);
