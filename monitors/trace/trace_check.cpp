@@ -234,8 +234,8 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
     if (q.kind == Query::Kind::Invariant || q.kind == Query::Kind::Reachable) {
       diagnostics.error(q.at, std::string(q.kind == Query::Kind::Invariant ? "A[]" : "E<>") +
                                   " is a question over every reachable state, which one recorded "
-                                  "run cannot answer: the invariant prover (smcbip prove, to "
-                                  "come) answers it");
+                                  "run cannot answer: the invariant prover (smcbip prove) "
+                                  "answers it");
     }
   }
   if (diagnostics.has_errors()) return {};

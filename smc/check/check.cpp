@@ -43,7 +43,7 @@ std::string exact_only(const monitors::Query& q) {
   return std::string(all ? "A[] phi asks whether phi holds in every reachable state"
                          : "E<> phi asks whether phi holds in some reachable state") +
          ", which sampled runs cannot show: it is answered exactly by the invariant prover "
-         "(smcbip prove, to come); statistically, " +
+         "(smcbip prove); statistically, " +
          (all ? "P>=1 [ G phi ]" : "P>0 [ F phi ]") + " tests the runs";
 }
 

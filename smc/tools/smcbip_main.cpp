@@ -4,7 +4,7 @@
 // `smcbip simulate` exits with the reference engine's run codes (0 normal end, 1..7 model
 // errors), 64 for usage errors, 65 for bad input, 70 for internal errors. `smcbip monitor` and
 // `smcbip check` and `smcbip explore` exit with 0 (no property false), 1 (one is), 2 (bad input or
-// usage), 3 (internal error).
+// usage), 3 (internal error); `smcbip prove` likewise, and 4 when a query is left open.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -16,6 +16,7 @@
 #include "engines/engines.h"
 #include "engines/options.h"
 #include "engines/plugin.h"
+#include "fdir/tools/prove_command.h"
 #include "smc/tools/check_command.h"
 #include "smc/tools/distributed.h"
 #include "smc/tools/model_loading.h"
@@ -70,7 +71,8 @@ int run_simulate(const bipc::FrontendOptions& frontend, const engines::SimulateO
 /// of runs for `simulate` (and for a command line with no command).
 const exit_codes::FailureCodes& failure_codes(int argc, char** argv) {
   const std::string command = argc > 1 ? argv[1] : "";
-  const bool judging = command == "monitor" || command == "check" || command == "explore";
+  const bool judging =
+      command == "monitor" || command == "check" || command == "explore" || command == "prove";
   return judging ? exit_codes::kJudgingCodes : exit_codes::kRunCodes;
 }
 
@@ -100,6 +102,10 @@ int run(int argc, char** argv) {
   CLI::App* explore = app.add_subcommand(
       "explore", "answer parametric queries over their whole sweep at once, and plot them");
   tools::register_check_options(*explore, explore_command, true);
+  tools::ProveCommand prove_command;
+  CLI::App* prove = app.add_subcommand(
+      "prove", "answer the A[] and E<> queries of a property file by invariants (Z3)");
+  tools::register_prove_options(*prove, prove_command);
   cli::add_version_flags(app, "smcbip");
   if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;
   if (simulate->parsed() && frontend.file.empty() && compiled.empty()) {
@@ -108,6 +114,7 @@ int run(int argc, char** argv) {
   if (monitor->parsed()) return tools::run_monitor(monitor_options);
   if (check->parsed()) return tools::run_check_distributed(check_command, argc, argv);
   if (explore->parsed()) return tools::run_check_distributed(explore_command, argc, argv);
+  if (prove->parsed()) return tools::run_prove(prove_command);
   if (!compiled.empty()) return run_compiled(frontend, compiled, options);
   return run_simulate(frontend, options);
 }
