@@ -181,7 +181,7 @@ void add_function(const FunctionSignature& f, const asn1::DataView& data, ShimTe
   sources += "," + file;
   const detail::FunctionShim made = detail::function_shim(f, data);
   shim.state += made.state + "\n";
-  shim.definitions += made.context + made.c_stubs;
+  shim.definitions += made.context + made.required_entries;
   for (const detail::ShimCall& call : made.calls) {
     shim.definitions += call.definition;
     const std::string proto = call.definition.substr(0, call.definition.find(" {"));

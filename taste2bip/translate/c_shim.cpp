@@ -8,6 +8,11 @@ namespace smcbip::taste2bip::detail {
 
 namespace {
 
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
 std::string cpp_type(const std::string& bip_type) {
   if (bip_type == "float") return "double";
   if (bip_type == "string") return "std::string";
@@ -104,9 +109,10 @@ void required_interface(const FunctionSignature& f, const SignalInterface& r, st
       }
     }
   }
-  shim.c_stubs += "extern \"C\" void " + c_function_name(f) + "_RI_" + c_interface_name(r) + "(" +
-                  (c_params.empty() ? "void" : c_params) + ") {\n" + keep + "  " + activation(f) +
-                  ".pause(" + std::to_string(number) + ");\n}\n\n";
+  shim.required_entries += "extern \"C\" void " + c_function_name(f) + "_RI_" +
+                           c_interface_name(r) + "(" + (c_params.empty() ? "void" : c_params) +
+                           ") {\n" + keep + "  " + activation(f) + ".pause(" +
+                           std::to_string(number) + ");\n}\n\n";
 }
 
 /// Timer `t` (the k-th): `<f>_RI_SET_<t>` and `<f>_RI_RESET_<t>` pause the body with status
@@ -115,13 +121,13 @@ void timer(const FunctionSignature& f, std::size_t k, FunctionShim& shim) {
   const std::string& t = f.context_timers[k];
   const std::string c = c_function_name(f), run = f.name + "__run_timer_" + t;
   shim.state += "void " + run + "() { " + c + "_PI_" + c_identifier(t) + "(); }\n\n";
-  shim.c_stubs += "extern \"C\" void " + c + "_RI_SET_" + c_identifier(t) +
-                  "(const asn1SccT_UInt32* val) {\n  " + f.name +
-                  "__timer_value = static_cast<int>(*val);\n  " + activation(f) + ".pause(" +
-                  std::to_string(timer_status(f, k, true)) + ");\n}\n\n";
-  shim.c_stubs += "extern \"C\" void " + c + "_RI_RESET_" + c_identifier(t) + "(void) {\n  " +
-                  activation(f) + ".pause(" + std::to_string(timer_status(f, k, false)) +
-                  ");\n}\n\n";
+  shim.required_entries += "extern \"C\" void " + c + "_RI_SET_" + c_identifier(t) +
+                           "(const asn1SccT_UInt32* val) {\n  " + f.name +
+                           "__timer_value = static_cast<int>(*val);\n  " + activation(f) +
+                           ".pause(" + std::to_string(timer_status(f, k, true)) + ");\n}\n\n";
+  shim.required_entries += "extern \"C\" void " + c + "_RI_RESET_" + c_identifier(t) +
+                           "(void) {\n  " + activation(f) + ".pause(" +
+                           std::to_string(timer_status(f, k, false)) + ");\n}\n\n";
   add_call(shim, shim_call_timer(f, t), "int", {}, "",
            "  return " + activation(f) + ".start(&" + run + ");\n");
 }
@@ -132,8 +138,7 @@ std::string context_values(const FunctionSignature& f) {
   const std::string ctxt = c_function_name(f) + "_ctxt";
   text += "  std::memset(&" + ctxt + ", 0, sizeof " + ctxt + ");\n";
   for (const ContextValue& c : f.context) {
-    std::string v;
-    for (char ch : c.value) v += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    const std::string v = lower_case(c.value);
     const bool number = !v.empty() && v.find_first_not_of("+-.0123456789e") == std::string::npos;
     if (c.leaves.size() == 1 && c.leaves[0].suffix.empty() &&
         (number || v == "true" || v == "false")) {
@@ -172,15 +177,11 @@ std::string bip_declaration(const ShimCall& call) {
 }
 
 std::string c_function_name(const FunctionSignature& f) {
-  std::string name = c_identifier(f.source->name);
-  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return name;
+  return lower_case(c_identifier(f.source->name));
 }
 
 std::string c_context_field(const ContextValue& c) {
-  std::string name = c_identifier(c.name);
-  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return name;
+  return lower_case(c_identifier(c.name));
 }
 
 std::string c_interface_name(const SignalInterface& i) { return c_identifier(i.source->name); }

@@ -6,19 +6,12 @@
 
 #include "bipc/errors.h"
 #include "console/console.h"
+#include "console_test_support.h"
 
 namespace smcbip::pus::console {
 namespace {
 
-/// An ST01 report of `request`, with a step ID and a failure code.
-Verification verification(const RequestId& request, std::uint64_t step = 0,
-                          std::uint64_t code = 0) {
-  Verification v;
-  v.request = request;
-  v.step_id = step;
-  v.failure_code = code;
-  return v;
-}
+using testing::verification;
 
 /// A TM from APID 0x12, sequence count 3, destination 7, at 100.5 s (fine 0x8000 of 2^16).
 Telemetry make_tm(std::uint8_t service, std::uint8_t subtype, Message data) {

@@ -19,19 +19,12 @@
 
 #include "bipc/errors.h"
 #include "console/console.h"
+#include "console_test_support.h"
 
 namespace smcbip::pus::console {
 namespace {
 
-/// An ST01 report of `request`, with a step ID and a failure code.
-Verification verification(const RequestId& request, std::uint64_t step = 0,
-                          std::uint64_t code = 0) {
-  Verification v;
-  v.request = request;
-  v.step_id = step;
-  v.failure_code = code;
-  return v;
-}
+using testing::verification;
 
 /// A UDP socket on 127.0.0.1 at a port the system chooses; answers each TC[17,1] it receives
 /// with TM[1,1], TM[17,2], TM[1,7], each TC of another type with TM[1,2] (code 1).

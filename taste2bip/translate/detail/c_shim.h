@@ -54,9 +54,9 @@ std::string c_parameter_type(const asn1::DataView& data, const std::string& asn1
 /// Everything the shim defines for `f`: its state (buffers, the paused call's arguments, the
 /// activation), the required interfaces' C entry points, and `calls`.
 struct FunctionShim {
-  std::string state;    // in the shim's anonymous namespace
-  std::string c_stubs;  // `extern "C"` definitions of <f>_RI_<r>
-  std::string context;  // the definition of `<f>_ctxt`, when f has context parameters
+  std::string state;             // in the shim's anonymous namespace
+  std::string required_entries;  // `extern "C"` <f>_RI_<r> and timer calls the body makes
+  std::string context;           // the definition of `<f>_ctxt`, when f has context parameters
   std::vector<ShimCall> calls;
 };
 
