@@ -147,6 +147,10 @@ TEST(Benchmarks, TheTrainGateIsSafeAndDeadlockFree) {
   EXPECT_EQ(safe.verdict, Verdict::Holds);
   EXPECT_EQ(safe.method, "exploration");
   EXPECT_EQ(prove_text(*system, "A[] !deadlock").verdict, Verdict::Holds);
+  ASSERT_TRUE(tests::some_reachable(
+      *system, [&read](const engines::RunState& s, const engines::Layout& layout, bool) {
+        return read.marked(s, layout, "t0", "crossing") && read.marked(s, layout, "t1", "crossing");
+      }));
   const QueryOutcome both = prove_text(*system, "E<> t0.crossing && t1.crossing");
   EXPECT_EQ(both.verdict, Verdict::Holds);
   ASSERT_FALSE(both.trace.empty());
@@ -265,6 +269,11 @@ TEST(Benchmarks, TheRoverPowerFeedToleratesOneFault) {
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.method, "invariants");
   // The fault is isolated in some run: the detector watches the redundant unit.
+  ASSERT_TRUE(tests::some_reachable(
+      *system, [&read](const engines::RunState& s, const engines::Layout& layout, bool) {
+        return read.marked(s, layout, "detector", "watching_redundant") &&
+               read.marked(s, layout, "drive", "idle");
+      }));
   EXPECT_EQ(prove_text(*system, "E<> detector.watching_redundant && drive.idle").verdict,
             Verdict::Holds);
 }
