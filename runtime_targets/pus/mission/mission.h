@@ -97,6 +97,9 @@ struct MonitoringDefinition {
   bool enabled = true;
 };
 
+/// The event-action definitions the on-board table holds (the mission's and those added by TC).
+inline constexpr std::size_t kMaxEventActions = 16;
+
 /// An ST19 event-action definition: the whole TC (octets) released when the event is raised.
 struct EventAction {
   std::uint64_t event = 0;

@@ -174,6 +174,11 @@ bool MissionReader::read_check(const std::string& at, MonitoringDefinition& d,
 
 void MissionReader::read_event_actions() {
   const auto count = reader_.array_size("", "event_actions", false);
+  if (count && *count > kMaxEventActions) {
+    reader_.error("/event_actions",
+                  "at most " + std::to_string(kMaxEventActions) + " event-action definitions");
+    return;
+  }
   std::set<std::uint64_t> seen;
   for (std::size_t i = 0; count && i < *count; ++i) {
     const std::string at = FieldReader::element("/event_actions", i);
