@@ -5,13 +5,17 @@ namespace smcbip::pus::services {
 
 CucTime to_cuc(Millis now, const Config& config) {
   const std::uint64_t fine_units = std::uint64_t{1} << (8 * config.cuc_fine_bytes);
-  return CucTime{static_cast<std::uint32_t>(now / 1000),
-                 static_cast<std::uint32_t>((now % 1000) * fine_units / 1000)};
+  // Rounded to the nearest fine unit, so that to_millis(to_cuc(t)) == t whenever a fine unit
+  // is under half a millisecond (two fine octets and more).
+  const std::uint64_t fine = ((now % 1000) * fine_units + 500) / 1000;
+  if (fine == fine_units) return CucTime{static_cast<std::uint32_t>(now / 1000 + 1), 0};
+  return CucTime{static_cast<std::uint32_t>(now / 1000), static_cast<std::uint32_t>(fine)};
 }
 
 Millis to_millis(const CucTime& time, const Config& config) {
   const std::uint64_t fine_units = std::uint64_t{1} << (8 * config.cuc_fine_bytes);
-  return Millis{time.coarse} * 1000 + std::uint64_t{time.fine} * 1000 / fine_units;
+  return Millis{time.coarse} * 1000 +
+         (std::uint64_t{time.fine} * 1000 + fine_units / 2) / fine_units;
 }
 
 bool TmOutput::emit(std::uint8_t service, std::uint8_t subtype, const Message& data,

@@ -15,9 +15,9 @@ namespace smcbip::pus::services {
 /// On-board time in milliseconds since the epoch of the CUC time.
 using Millis = std::uint64_t;
 
-/// The CUC time of an on-board time under the config (fine time truncated).
+/// The CUC time of an on-board time under the config (to the nearest fine unit).
 CucTime to_cuc(Millis now, const Config& config);
-/// The on-board time of a CUC time (fine time truncated to the millisecond).
+/// The on-board time of a CUC time (to the nearest millisecond).
 Millis to_millis(const CucTime& time, const Config& config);
 
 /// The longest TM packet the queue holds.
