@@ -110,13 +110,7 @@ std::optional<Millis> Application::next_due() const {
 }
 
 void Application::raise(const Transition& transition, Millis at) {
-  // Auxiliary data: the monitoring definition ID (2 octets) and the raw value (4 octets).
-  const std::array<std::uint8_t, 6> aux{static_cast<std::uint8_t>(transition.definition >> 8),
-                                        static_cast<std::uint8_t>(transition.definition),
-                                        static_cast<std::uint8_t>(transition.raw_value >> 24),
-                                        static_cast<std::uint8_t>(transition.raw_value >> 16),
-                                        static_cast<std::uint8_t>(transition.raw_value >> 8),
-                                        static_cast<std::uint8_t>(transition.raw_value)};
+  const auto aux = event_aux(transition);
   if (!events_.raise(transition.event, aux, at)) return;
   if (const auto action = event_action_.on_event(transition.event)) receive(action->span(), at);
 }

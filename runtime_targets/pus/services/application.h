@@ -47,6 +47,14 @@ class Application {
   TmOutput& tm() { return tm_; }
   TcReception& reception() { return reception_; }
   ParameterStore& parameters() { return parameters_; }
+  /// The services one by one, for a host (the BIP model's atoms) that runs their periodic
+  /// work itself, each at its own pace, instead of through tick().
+  EventReporting& events() { return events_; }
+  Housekeeping& housekeeping() { return housekeeping_; }
+  Monitoring& monitoring() { return monitoring_; }
+  Schedule& schedule() { return schedule_; }
+  EventAction& event_action() { return event_action_; }
+  TimeReporting& time_reporting() { return time_; }
   const EventReporting& events() const { return events_; }
   const FunctionManagement& functions() const { return functions_; }
   const Housekeeping& housekeeping() const { return housekeeping_; }

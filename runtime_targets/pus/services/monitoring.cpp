@@ -8,6 +8,15 @@ bool violation(CheckStatus status) {
          status == CheckStatus::UnexpectedValue;
 }
 
+std::array<std::uint8_t, 6> event_aux(const Transition& transition) {
+  return {static_cast<std::uint8_t>(transition.definition >> 8),
+          static_cast<std::uint8_t>(transition.definition),
+          static_cast<std::uint8_t>(transition.raw_value >> 24),
+          static_cast<std::uint8_t>(transition.raw_value >> 16),
+          static_cast<std::uint8_t>(transition.raw_value >> 8),
+          static_cast<std::uint8_t>(transition.raw_value)};
+}
+
 Monitoring::Monitoring(const mission::Mission& mission, const ParameterStore& parameters,
                        Millis start)
     : mission_(mission), parameters_(parameters) {

@@ -2,6 +2,7 @@
 // reported as ST05 events.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -36,6 +37,10 @@ struct Transition {
   CheckStatus to{};
   std::uint64_t event = 0;
 };
+
+/// The auxiliary data of the event a transition raises: the monitoring definition ID (2
+/// octets) and the parameter's raw value (4 octets).
+std::array<std::uint8_t, 6> event_aux(const Transition& transition);
 
 /// Checks each enabled definition every interval (from start, or from its enabling); a new
 /// status is confirmed after `repetitions` consecutive checks agree on it.
