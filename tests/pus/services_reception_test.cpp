@@ -49,6 +49,34 @@ TEST(PusServicesReception, AcknowledgementFlagsSelectTheSuccessReports) {
   EXPECT_EQ(failure_of(tm[0]), std::make_pair(std::uint64_t{4}, std::uint32_t{99}));
 }
 
+TEST(PusServicesReception, EveryStageReportsItsSuccessOrFailure) {
+  TmOutput out(Config{}, 18);
+  services::Verification verification(out);
+  Telecommand tc;
+  tc.primary.apid = 18;
+  tc.primary.sequence_count = 3;
+  tc.header.source_id = 9;
+  tc.header.ack_flags = 0b0100;  // progress only
+  const Failure failure{FailureCode::InvalidArgument, 0x01020304};
+  verification.accepted(tc, 0);
+  verification.started(tc, 0);
+  verification.progressed(tc, 2, 0);
+  verification.completed(tc, 0);
+  verification.start_failed(tc, failure, 0);
+  verification.progress_failed(tc, 3, failure, 0);
+  verification.completion_failed(tc, failure, 0);
+  const auto tm = drain(out);
+  // Successes as the flags ask (progress only), failures always.
+  ASSERT_EQ(kinds(tm), (Kinds{{1, 5}, {1, 4}, {1, 6}, {1, 8}}));
+  EXPECT_EQ(std::get<pus::Verification>(tm[0].data).step_id, 2U);
+  EXPECT_EQ(std::get<pus::Verification>(tm[2].data).step_id, 3U);
+  for (const Telemetry& packet : tm) {
+    EXPECT_EQ(packet.header.destination_id, 9);
+    EXPECT_EQ(std::get<pus::Verification>(packet.data).request, RequestId::of(tc.primary));
+  }
+  EXPECT_EQ(failure_of(tm[3]), std::make_pair(std::uint64_t{5}, std::uint32_t{0x01020304}));
+}
+
 TEST(PusServicesReception, MalformedTcIsRejectedWithItsReason) {
   auto app = application();
   auto bytes = tc_bytes(17, 1, NoData{}, 9);

@@ -53,6 +53,11 @@ void Verification::progressed(const Telecommand& tc, std::uint64_t step, Millis 
   }
 }
 
+void Verification::progress_failed(const Telecommand& tc, std::uint64_t step,
+                                   const Failure& failure, Millis now) {
+  report(6, RequestId::of(tc.primary), tc.header.source_id, &failure, step, now);
+}
+
 void Verification::completed(const Telecommand& tc, Millis now) {
   if (asks(tc, kAckCompletion)) {
     report(7, RequestId::of(tc.primary), tc.header.source_id, nullptr, 0, now);

@@ -45,6 +45,8 @@ class Verification {
   void started(const Telecommand& tc, Millis now);
   void start_failed(const Telecommand& tc, const Failure& failure, Millis now);
   void progressed(const Telecommand& tc, std::uint64_t step, Millis now);
+  void progress_failed(const Telecommand& tc, std::uint64_t step, const Failure& failure,
+                       Millis now);
   void completed(const Telecommand& tc, Millis now);
   void completion_failed(const Telecommand& tc, const Failure& failure, Millis now);
 
