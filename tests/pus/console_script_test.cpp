@@ -83,6 +83,34 @@ TEST(PusConsoleScript, WaitLinesArePausesAndTheirWordsAreChecked) {
   EXPECT_NE(bad.errors[3].message.find("got 'more' after it"), std::string::npos);
 }
 
+TEST(PusConsoleScript, RawLinesAreOctetsSentAsTheyAre) {
+  // The ping of the README (1800c00000062f110100007958) with its last CRC octet changed.
+  const ParsedScript script = parse_script("raw 1800c00000062f110100007959\n17 1\n", Config{});
+  ASSERT_TRUE(script.errors.empty());
+  ASSERT_EQ(script.tcs.size(), 2u);
+  EXPECT_TRUE(script.tcs[0].raw);
+  EXPECT_EQ(script.tcs[0].bytes.size(), 13u);
+  EXPECT_EQ(script.tcs[1].tc.primary.sequence_count, 0);  // a raw line numbers nothing
+  std::ostringstream out;
+  Session session(Config{}, out, nullptr);
+  run_script(script, session, std::chrono::milliseconds(0));
+  // The decoder's refusal of the octets, as a received packet's row shows it, status not sent.
+  EXPECT_EQ(session.rows()[0].status, "not sent");
+  EXPECT_EQ(session.rows()[0].kind, "TC");
+  EXPECT_NE(session.rows()[0].information.find("bad-crc"), std::string::npos);
+  // A raw line that decodes gets the TC's row.
+  const ParsedScript valid = parse_script("raw 1800c00000062f110100007958\n", Config{});
+  Session valid_session(Config{}, out, nullptr);
+  run_script(valid, valid_session, std::chrono::milliseconds(0));
+  EXPECT_EQ(valid_session.rows()[0].information, "TC[17,1] are-you-alive connection test");
+  const ParsedScript bad = parse_script("raw\nraw 18zz\nraw 18 00\n", Config{});
+  ASSERT_EQ(bad.errors.size(), 3u);
+  EXPECT_EQ(format_error("s.tc", bad.errors[0]),
+            "s.tc:1:4: error: raw: expected the octets in hex, got nothing");
+  EXPECT_EQ(bad.errors[1].column, 7u);  // the first 'z'
+  EXPECT_EQ(bad.errors[2].column, 8u);  // the word after the octets
+}
+
 TEST(PusConsoleScript, WithoutALinkTheTcsAreListedAsNotSent) {
   const ParsedScript script = parse_script("17 1 --apid 0x12\n20 1 --param 7\n", Config{});
   std::ostringstream out;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "console/hex.h"
+
 namespace smcbip::pus::console {
 namespace {
 
@@ -85,6 +87,27 @@ void parse_wait(const std::vector<Word>& words, std::uint32_t line, std::uint32_
   result.wait = std::chrono::milliseconds(ms);
 }
 
+/// `raw HEX`: the octets, or the error at the word that is not hex.
+void parse_raw(const std::vector<Word>& words, std::uint32_t line, std::uint32_t end_column,
+               LineResult& result) {
+  if (words.size() != 2) {
+    const std::uint32_t column = words.size() < 2 ? end_column : words[2].column;
+    const std::string got = words.size() < 2 ? "nothing" : "'" + words[2].text + "' after it";
+    result.errors.push_back(located(line, column, "raw: expected the octets in hex, got " + got));
+    return;
+  }
+  std::vector<std::uint8_t> bytes;
+  HexError error;
+  const bool parsed = parse_hex(words[1].text, bytes, error);
+  if (!parsed || bytes.empty()) {
+    const auto column = words[1].column + static_cast<std::uint32_t>(parsed ? 0 : error.offset);
+    result.errors.push_back(
+        located(line, column, "raw: expected " + (parsed ? "at least one octet" : error.expected)));
+    return;
+  }
+  result.raw = std::move(bytes);
+}
+
 }  // namespace
 
 LineResult parse_line(std::string_view text, std::uint32_t line, const Config& config) {
@@ -94,6 +117,10 @@ LineResult parse_line(std::string_view text, std::uint32_t line, const Config& c
   const auto end_column = static_cast<std::uint32_t>(text.find_last_not_of(" \t\r") + 2);
   if (words.front().text == "wait") {
     parse_wait(words, line, end_column, result);
+    return result;
+  }
+  if (words.front().text == "raw") {
+    parse_raw(words, line, end_column, result);
     return result;
   }
   if (words.front().text == "encode") words.erase(words.begin());
@@ -157,6 +184,7 @@ ParsedScript parse_script(std::string_view text, const Config& config) {
     LineResult result = parse_line(text.substr(start, end - start), line, config);
     for (ScriptError& e : result.errors) script.errors.push_back(std::move(e));
     if (result.wait) script.tcs.push_back({Telecommand{}, {}, line, result.wait});
+    if (result.raw) script.tcs.push_back({Telecommand{}, *result.raw, line, std::nullopt, true});
     if (result.has_tc) {
       sequencer.number(result.tc);
       ParsedScript::Entry entry{result.tc.tc, encode_tc(result.tc.tc, config), line, std::nullopt};

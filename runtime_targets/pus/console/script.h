@@ -26,6 +26,8 @@ struct LineResult {
   bool has_tc = false;
   BuiltTc tc;  ///< checked to encode; its sequence count is set by a Sequencer
   std::optional<std::chrono::milliseconds> wait;  ///< `wait MS`: receive for MS before going on
+  /// `raw HEX`: octets sent as they are, unchecked (to see how the other end refuses them).
+  std::optional<std::vector<std::uint8_t>> raw;
   std::vector<ScriptError> errors;
 };
 
@@ -33,7 +35,7 @@ struct LineResult {
 inline constexpr std::uint64_t kMaxWaitMs = 3600000;
 
 /// Parses one line numbered `line`: a TC (an optional leading word `encode`, SERVICE SUBTYPE,
-/// fields and header options) or `wait MS`; '#' starts a comment.
+/// fields and header options), `wait MS` or `raw HEX`; '#' starts a comment.
 LineResult parse_line(std::string_view text, std::uint32_t line, const Config& config);
 
 /// Numbers the TCs without --seq: one more than the previous TC of the same APID, from 0
@@ -54,6 +56,7 @@ struct ParsedScript {
     std::vector<std::uint8_t> bytes;
     std::uint32_t line = 0;
     std::optional<std::chrono::milliseconds> wait;  ///< set for a pause (then no TC)
+    bool raw = false;  ///< `bytes` are a raw line's octets (then no TC)
   };
   std::vector<Entry> tcs;
   std::vector<ScriptError> errors;

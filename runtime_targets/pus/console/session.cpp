@@ -25,6 +25,19 @@ void Session::send(const Telecommand& tc, std::span<const std::uint8_t> bytes) {
   while (auto packet = link_->receive(std::chrono::milliseconds(0))) received(*packet);
 }
 
+void Session::send_raw(std::span<const std::uint8_t> bytes) {
+  if (link_ != nullptr) link_->send(bytes);
+  const std::size_t index = rows_.size() + 1;
+  const std::string status = link_ != nullptr ? "sent" : "not sent";
+  auto tc = decode_tc(bytes, config_);
+  Row row =
+      tc ? tc_row(index, tc.value(), config_, status) : malformed_row(index, bytes, tc.error());
+  row.status = status;
+  add(row);
+  if (link_ == nullptr) return;
+  while (auto packet = link_->receive(std::chrono::milliseconds(0))) received(*packet);
+}
+
 void Session::receive_for(std::chrono::milliseconds wait) {
   if (link_ == nullptr) return;
   const auto deadline = std::chrono::steady_clock::now() + wait;
@@ -49,6 +62,8 @@ void run_script(const ParsedScript& script, Session& session, std::chrono::milli
   for (const ParsedScript::Entry& entry : script.tcs) {
     if (entry.wait) {
       session.receive_for(*entry.wait);
+    } else if (entry.raw) {
+      session.send_raw(entry.bytes);
     } else {
       session.send(entry.tc, entry.bytes);
     }
@@ -67,6 +82,10 @@ std::size_t run_interactive(std::istream& in, const std::string& name, Session& 
     for (const ScriptError& e : result.errors) err << format_error(name, e) << "\n";
     refused += result.errors.empty() ? 0 : 1;
     if (result.wait) session.receive_for(*result.wait);
+    if (result.raw) {
+      session.send_raw(*result.raw);
+      session.receive_for(wait);
+    }
     if (!result.has_tc) continue;
     sequencer.number(result.tc);
     session.send(result.tc.tc, encode_tc(result.tc.tc, config));

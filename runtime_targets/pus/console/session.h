@@ -25,6 +25,9 @@ class Session {
   /// Sends one encoded TC (when there is a link) and adds its row; then adds the rows of the
   /// packets already received.
   void send(const Telecommand& tc, std::span<const std::uint8_t> bytes);
+  /// Sends octets as they are (when there is a link) and adds their row: a TC's if they decode
+  /// as one, else the decoder's refusal; then adds the rows of the packets already received.
+  void send_raw(std::span<const std::uint8_t> bytes);
   /// Adds the row of every packet received until `wait` has passed.
   void receive_for(std::chrono::milliseconds wait);
   /// Adds the row of one packet received (a TM, a TC, or octets the decoder refuses).

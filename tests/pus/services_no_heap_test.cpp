@@ -1,0 +1,45 @@
+// The services' packet path allocates nothing once the application is built: a TC received,
+// executed and answered, and the periodic work, under a counting global operator new.
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "services_test_support.h"
+
+namespace {
+std::atomic<std::size_t> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace smcbip::pus::services {
+namespace {
+
+TEST(PusServicesNoHeap, ReceiveExecuteAndTickWithoutAllocating) {
+  auto app = testing::application();
+  ParameterValues hot;
+  hot.values.push_back(IdValue{2, 80});
+  const std::vector<std::vector<std::uint8_t>> requests{
+      testing::tc_bytes(17, 1, NoData{}, 0), testing::tc_bytes(3, 5, testing::ids({1}), 1),
+      testing::tc_bytes(20, 3, hot, 2), testing::tc_bytes(20, 1, testing::ids({1, 2, 3}), 3)};
+  const std::size_t before = allocations.load();
+  Millis now = 0;
+  for (const auto& request : requests) {
+    app->receive(request, now);
+    // Monitoring, its event and action, housekeeping and time reports.
+    now += 250;
+    app->tick(now);
+    while (app->tm().front() != nullptr) app->tm().pop();
+  }
+  EXPECT_EQ(allocations.load(), before);
+  EXPECT_EQ(app->parameters().value(3), 0);  // the action ran
+}
+
+}  // namespace
+}  // namespace smcbip::pus::services
