@@ -29,10 +29,17 @@ struct Command {
   unsigned line = 0, column = 0;
 };
 
-/// The top-level commands of `text`, skipping comments, strings and quoted symbols (what is
-/// malformed beyond that is left to Z3's parser, which reports it).
-std::vector<Command> top_level_commands(const std::string& text) {
-  std::vector<Command> out;
+/// The top-level commands of an SMT-LIB2 text, and the text with its comments blanked out
+/// (Z3 4.8's scanner counts the columns of a line after a comment one too far).
+struct Scan {
+  std::vector<Command> commands;
+  std::string text;
+};
+
+/// Scans `text`, skipping comments, strings and quoted symbols (what is malformed beyond that
+/// is left to Z3's parser, which reports it).
+Scan scan(const std::string& text) {
+  Scan out{{}, text};
   unsigned line = 1, column = 1;
   int depth = 0;
   for (std::size_t k = 0; k < text.size(); ++k, ++column) {
@@ -41,7 +48,8 @@ std::vector<Command> top_level_commands(const std::string& text) {
       ++line;
       column = 0;
     } else if (ch == ';') {
-      while (k + 1 < text.size() && text[k + 1] != '\n') ++k;
+      for (; k < text.size() && text[k] != '\n'; ++k) out.text[k] = ' ';
+      --k;
     } else if (ch == '"' || ch == '|') {
       for (++k, ++column; k < text.size() && text[k] != ch; ++k, ++column) {
         if (text[k] == '\n') {
@@ -56,7 +64,7 @@ std::vector<Command> top_level_commands(const std::string& text) {
                                      text[end] == '-' || text[end] == '_')) {
           ++end;
         }
-        out.push_back({text.substr(k + 1, end - k - 1), line, column});
+        out.commands.push_back({text.substr(k + 1, end - k - 1), line, column});
       }
     } else if (ch == ')') {
       --depth;
@@ -133,8 +141,8 @@ std::vector<Assumption> parse_assumptions(const AssumptionSource& source,
                                           const StateEncoding& state) {
   static const std::set<std::string> allowed{"assert", "define-fun", "define-sort", "set-info",
                                              "check-sat"};
-  const std::vector<Command> commands = top_level_commands(source.text);
-  for (const Command& command : commands) {
+  const Scan scanned = scan(source.text);
+  for (const Command& command : scanned.commands) {
     if (!allowed.contains(command.name)) {
       throw AssumptionError(source.file, command.line, command.column,
                             "'" + command.name +
@@ -146,12 +154,12 @@ std::vector<Assumption> parse_assumptions(const AssumptionSource& source,
   Names names = declared_names(state);
   z3::expr_vector parsed(state.context());
   try {
-    parsed = state.context().parse_string(("\n" + source.text).c_str(), names.sorts, names.decls);
+    parsed = state.context().parse_string(("\n" + scanned.text).c_str(), names.sorts, names.decls);
   } catch (const z3::exception& e) {
     parse_error(source.file, e.msg(), names);
   }
   std::vector<Command> asserts;
-  for (const Command& command : commands) {
+  for (const Command& command : scanned.commands) {
     if (command.name == "assert") asserts.push_back(command);
   }
   std::vector<Assumption> out;
