@@ -1,6 +1,7 @@
 // `smcbip prove`: loading, proving each query, and the report (human table or JSON).
 #include "fdir/tools/prove_command.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "bipc/exit_codes.h"
 #include "bipc/options.h"
 #include "fdir/errors.h"
+#include "fdir/tools/prove_trace.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
 
@@ -168,6 +170,11 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
                   "an SMT-LIB2 file of assertions over the model's places and data, used once "
                   "shown inductive (repeatable)")
       ->type_name("FILE.smt2");
+  command
+      .add_option("--trace-out", prove.trace_out,
+                  "write the first counterexample or witness as a JSON-lines trace, which "
+                  "smcbip simulate --replay follows")
+      ->type_name("FILE");
   cli::add_json_flag(command, prove.json);
   command.footer(
       "Priorities are dropped and clocks ignored by the invariants, which over-approximates the "
@@ -220,6 +227,16 @@ int run_prove(const ProveCommand& prove) {
   }
   if (prove.json)
     std::cout << nlohmann::json{{"model", prove.model.file}, {"queries", all}}.dump(2) << "\n";
+  if (!prove.trace_out.empty()) {
+    const auto traced = std::find_if(outcomes.begin(), outcomes.end(),
+                                     [](const QueryOutcome& o) { return !o.trace.empty(); });
+    if (traced == outcomes.end()) {
+      std::cerr << "smcbip: no query has a counterexample or witness: " << prove.trace_out
+                << " is not written\n";
+    } else if (const int failed = write_prove_trace(prove.trace_out, *system, traced->trace)) {
+      return failed;
+    }
+  }
   return code;
 }
 

@@ -17,6 +17,7 @@ struct ProveCommand {
   bool json = false;
   fdir::ProveOptions options;
   std::vector<std::string> assumptions;  // --assume: SMT-LIB2 files
+  std::string trace_out;                 // --trace-out: JSON-lines file of the first trace
 };
 
 /// The options of `prove`.
