@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "bipc/json_dump.h"
 #include "engines/detail/replay_follower.h"
 #include "engines/trace/text_trace.h"
 
@@ -17,7 +18,8 @@ ReplayStep read_step(const Json& line, std::size_t number, std::size_t expected,
                      const std::string& where) {
   ReplayStep step;
   step.line = number;
-  if (!line["step"].is_number_unsigned() || line["step"].get<std::size_t>() != expected) {
+  if (!line.contains("step") || !line["step"].is_number_unsigned() ||
+      line["step"].get<std::size_t>() != expected) {
     throw ReplayError(where, "expected step " + std::to_string(expected));
   }
   const Json& fired = line.value("fired", Json());
@@ -32,13 +34,13 @@ ReplayStep read_step(const Json& line, std::size_t number, std::size_t expected,
     if (!line["places"].is_object()) throw ReplayError(where, "'places' is not an object");
     auto& places = step.places.emplace();
     for (const auto& [atom, marked] : line["places"].items()) {
-      if (!marked.is_array()) throw ReplayError(where, "the places of " + atom + " are no list");
+      if (!marked.is_array()) throw ReplayError(where, "the places of " + atom + " are not a list");
       for (const Json& p : marked)
         places[atom].push_back(p.is_string() ? p.get<std::string>() : "");
     }
   }
   if (line.contains("data") && line["data"].is_object()) {
-    for (const auto& [name, value] : line["data"].items()) step.data[name] = value.dump();
+    for (const auto& [name, value] : line["data"].items()) step.data[name] = bipc::dump_json(value);
   }
   return step;
 }
@@ -87,13 +89,13 @@ std::string fired_name(const Runtime& runtime, const Item& item) {
 std::string value_text(const StateView& state, Val v, bipc::ir::ValueKind kind) {
   switch (kind) {
     case bipc::ir::ValueKind::Bool:
-      return Json(v.b).dump();
+      return bipc::dump_json(Json(v.b));
     case bipc::ir::ValueKind::Float:
-      return Json(v.f).dump();
+      return bipc::dump_json(Json(v.f));
     case bipc::ir::ValueKind::String:
-      return Json(std::string(state.text(v))).dump();
+      return bipc::dump_json(Json(std::string(state.text(v))));
     case bipc::ir::ValueKind::Int:
-      return Json(v.i).dump();
+      return bipc::dump_json(Json(v.i));
     default:
       return "null";
   }
