@@ -1,6 +1,7 @@
 // Reading a JSON-lines trace, and following it step by step.
 #include "engines/replay.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -30,6 +31,7 @@ ReplayStep read_step(const Json& line, std::size_t number, std::size_t expected,
   if (line.contains("interaction") && line["interaction"].is_string()) {
     step.interaction = line["interaction"].get<std::string>();
   }
+  if (line.contains("time") && line["time"].is_number()) step.time = line["time"].get<double>();
   if (line.contains("places")) {
     if (!line["places"].is_object()) throw ReplayError(where, "'places' is not an object");
     auto& places = step.places.emplace();
@@ -126,6 +128,8 @@ std::optional<std::size_t> ReplayFollower::pick(const Runtime& runtime) {
     const bool match = step.interaction.empty() ? fired_name(runtime, item) == step.fired
                                                 : text == step.interaction;
     if (match) {
+      date_.reset();
+      if (step.time) date_ = static_cast<TimeValue>(std::llround(*step.time * 1e6));
       ++next_;
       return i;
     }

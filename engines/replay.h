@@ -22,6 +22,8 @@ struct ReplayStep {
   /// The interaction as the text trace lists it (`ROOT.c: a.p(v=1;) b.q()`), when the trace
   /// gives it (`"interaction"`): it tells apart the interactions of one connector.
   std::string interaction;
+  /// The recorded date (`time`, in milliseconds), when the trace gives it.
+  std::optional<double> time;
   /// The recorded state, when the trace gives it: marked places per atom, and data values as
   /// JSON text by `atom.datum` (clocks are not compared).
   std::optional<std::map<std::string, std::vector<std::string>>> places;

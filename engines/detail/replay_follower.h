@@ -17,6 +17,8 @@ class ReplayFollower : public ItemPicker, public RunObserver {
   /// The enabled item step `next` of the trace names; nullopt at the end of the trace (or on a
   /// mismatch, recorded in failure()).
   std::optional<std::size_t> pick(const Runtime& runtime) override;
+  /// The date the trace records for the step picked last.
+  std::optional<TimeValue> date() const override { return date_; }
   /// Compares the state with the one the trace records at that step; false on a mismatch.
   bool observe(const StepInfo& step, const StateView& state) override;
   /// A run that ends (deadlock, time-lock) before the trace does is a mismatch.
@@ -32,6 +34,7 @@ class ReplayFollower : public ItemPicker, public RunObserver {
   const ReplayScript& script_;
   std::size_t next_ = 1;  // the step to fire next
   std::optional<RunResult> failure_;
+  std::optional<TimeValue> date_;
 };
 
 }  // namespace smcbip::engines::detail

@@ -62,6 +62,16 @@ sed 's/"ROOT.c.y":2/"ROOT.c.y":3/' "$work/witness.jsonl" > "$work/data.jsonl"
 [[ $? -eq 65 ]] && grep -qF 'ROOT.c.y is 2, the trace has 3' "$work/data.err" ||
   fail "a wrong datum should be refused: $(cat "$work/data.err")"
 
+# A simulated run of a timed model replays at its recorded dates: the same states and times
+# again (the header's seed and the end line, `limit` for the run, `stopped` for the replay, aside).
+"$bin" simulate "$src/tests/fdir/models/ticking.bip" --seed 5 --limit 6 --trace jsonl \
+  > "$work/timed.jsonl" || fail "the timed run failed"
+"$bin" simulate "$src/tests/fdir/models/ticking.bip" --replay "$work/timed.jsonl" --trace jsonl \
+  > "$work/timed_replay.jsonl" || fail "the timed run does not replay"
+[[ $(grep -c '"step"' "$work/timed.jsonl") -eq 7 ]] || fail "expected 7 states in the timed run"
+diff <(sed '1d;$d' "$work/timed.jsonl") <(sed '1d;$d' "$work/timed_replay.jsonl") ||
+  fail "the timed replay differs from the run"
+
 # Nothing is written when no query has a trace, nor into a folder that does not exist.
 "$bin" prove "$bench/philosophers_together.bip" "$bench/deadlock.mtl" \
   --trace-out "$work/none.jsonl" > /dev/null 2>&1
