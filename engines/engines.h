@@ -51,6 +51,7 @@ struct SimulateOptions {
   bool relaxed = false;  // real time: report time-safety violations without stopping
   bool disable_maximal_progress = false;
   bool interactive = false;
+  std::string replay;  // a JSON-lines trace to follow (replay.h), or empty
   bool silent = false;
   bool explore = false;
   /// --explore keeps every state it finds: at most this many (0.7 GB for the 10 atoms of
@@ -88,6 +89,8 @@ struct RunStreams {
 
 /// Runs one system many times (run indices select the random streams), keeping what does not
 /// change between runs. One simulator per thread.
+struct ReplayScript;
+
 class Simulator {
  public:
   /// Runs the system interpreted from its IR.
@@ -105,6 +108,11 @@ class Simulator {
   /// One run with the stream (seed, run_index); `observer` (optional) sees every step.
   RunResult run(std::uint64_t run_index, const RunStreams& streams,
                 RunObserver* observer = nullptr);
+  /// A run that follows `script` (replay.h): each step fires the interaction the trace names,
+  /// and each state reached must be the recorded one; a trace that cannot be followed ends the
+  /// run with kInputError, `where` the trace's `file:line`. The trace is written as the options
+  /// say.
+  RunResult replay(const ReplayScript& script, const RunStreams& streams);
   /// The seed in use (drawn from the platform when the options have none).
   std::uint64_t seed() const;
 

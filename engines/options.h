@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -13,6 +14,7 @@
 #include "bipc/options.h"
 #include "bipc/tool_main.h"
 #include "engines/engines.h"
+#include "engines/replay.h"
 
 namespace smcbip::engines {
 
@@ -46,11 +48,18 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
                "real time: report missed deadlines as warnings and go on");
   app.add_flag("--disable-maximal-progress", options.disable_maximal_progress,
                "do not restrict connectors to their maximal interactions");
-  app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
+  CLI::Option* interactive =
+      app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
+  app.add_option("--replay", options.replay,
+                 "follow a JSON-lines trace (--trace jsonl, smcbip prove --trace-out): fire the "
+                 "interaction of each step, which must be enabled, and check each state")
+      ->type_name("FILE")
+      ->excludes(interactive);
   app.add_flag("-s,--silent", options.silent, "print no engine trace (errors still)");
   app.add_flag(
-      "--explore", options.explore,
-      "enumerate the reachable states (untimed); with --limit, those within that many steps");
+         "--explore", options.explore,
+         "enumerate the reachable states (untimed); with --limit, those within that many steps")
+      ->excludes("--replay");
   app.add_option("--max-states", options.max_explored_states,
                  "--explore: keep at most this many states (default: " +
                      std::to_string(options.max_explored_states) + "), then stop")
@@ -88,8 +97,23 @@ inline int run_simulation(const Model& model, const SimulateOptions& options,
   // A JSON-lines trace keeps stdout for the trace: the model's own output goes to stderr.
   std::ostream& model_output = options.trace == TraceFormat::Jsonl ? std::cerr : std::cout;
   Simulator simulator(model, options, externs);
+  const RunStreams streams{std::cout, model_output, &std::cin};
+  std::optional<ReplayScript> script;
+  if (!options.replay.empty()) {
+    std::ifstream in(options.replay);
+    if (!in) {
+      std::cerr << options.replay << ": error: cannot read the trace\n";
+      return kInputError;
+    }
+    try {
+      script = read_replay_script(in, options.replay);
+    } catch (const ReplayError& e) {
+      std::cerr << e.where << ": error: " << e.what() << "\n";
+      return kInputError;
+    }
+  }
   const RunResult run =
-      simulator.run(options.run_index, RunStreams{std::cout, model_output, &std::cin});
+      script ? simulator.replay(*script, streams) : simulator.run(options.run_index, streams);
   std::cout.flush();
   if (run.code == kInputError || run.code == kInternalError || run.code == kUsageError) {
     const std::string& at = !run.where.empty() ? run.where : where.empty() ? tool : where;

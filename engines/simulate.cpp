@@ -4,6 +4,7 @@
 #include <iostream>
 #include <thread>
 
+#include "engines/detail/replay_follower.h"
 #include "engines/detail/scheduler.h"
 #include "engines/engines.h"
 #include "engines/explore.h"
@@ -56,15 +57,20 @@ class PromptPicker : public detail::ItemPicker {
 /// One run of a Simulator: the scheduler's decisions, the text trace, real time.
 class Simulation {
  public:
+  /// `picker` (optional) chooses the items instead of the scheduler (a replay).
   Simulation(Simulator::Shared& shared, std::uint64_t run_index, const RunStreams& streams,
-             RunObserver& observer)
+             RunObserver& observer, detail::ItemPicker* picker = nullptr)
       : shared_(shared),
         options_(shared.options),
         out_(streams.trace),
         observer_(observer),
         verbose_(!options_.silent && options_.trace == TraceFormat::Text),
         picker_(streams.trace, streams.input, steps_, verbose_),
-        scheduler_(shared, run_index, streams.model, options_.interactive ? &picker_ : nullptr),
+        scheduler_(shared, run_index, streams.model,
+                   picker                 ? picker
+                   : options_.interactive ? &picker_
+                                          : nullptr),
+        picked_(picker != nullptr),
         runtime_(scheduler_.runtime()),
         run_index_(run_index) {}
 
@@ -86,7 +92,8 @@ class Simulation {
       line("BIP Engine (version " SMCBIP_VERSION_TEXT " )");
       line("");
       line("initialize components...");
-      line("random scheduling based on seed=" + std::to_string(shared_.seed));
+      line(picked_ ? std::string("following a recorded trace")
+                   : "random scheduling based on seed=" + std::to_string(shared_.seed));
     }
     start_ = std::chrono::steady_clock::now();
     if (!scheduler_.start()) return error();
@@ -133,7 +140,7 @@ class Simulation {
   /// engine in simulated time without a text trace or a prompt.
   CompiledSteps* compiled_steps() {
     if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
-        verbose_ || options_.disable_maximal_progress) {
+        picked_ || verbose_ || options_.disable_maximal_progress) {
       return nullptr;
     }
     compiled_ = runtime_.code().make_steps(shared_.system, shared_.layout);
@@ -284,6 +291,7 @@ class Simulation {
   std::uint64_t steps_ = 0;  // the scheduler's, as of the last step observed
   PromptPicker picker_;
   detail::Scheduler scheduler_;
+  bool picked_;
   Runtime& runtime_;
   std::uint64_t run_index_;
   std::unique_ptr<CompiledSteps> compiled_;
@@ -322,6 +330,19 @@ RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
   Observers observers(observer, jsonl ? &*jsonl : nullptr);
   Simulation simulation(*shared_, run_index, streams, observers);
   return shared_->options.explore ? simulation.explore() : simulation.run();
+}
+
+RunResult Simulator::replay(const ReplayScript& script, const RunStreams& streams) {
+  if (!shared_->problem.empty()) return {kInputError, RunEnd::Error, 0, shared_->problem, {}};
+  std::optional<JsonlTrace> jsonl;
+  if (shared_->options.trace == TraceFormat::Jsonl && !shared_->options.silent) {
+    jsonl.emplace(streams.trace, shared_->layout, shared_->seed, shared_->options.run_index);
+  }
+  detail::ReplayFollower follower(script);
+  Observers observers(&follower, jsonl ? &*jsonl : nullptr);
+  Simulation simulation(*shared_, shared_->options.run_index, streams, observers, &follower);
+  const RunResult result = simulation.run();
+  return follower.failure() ? *follower.failure() : result;
 }
 
 RunResult simulate(const bipc::ir::System& system, const SimulateOptions& options,

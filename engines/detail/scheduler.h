@@ -94,6 +94,9 @@ class ItemPicker {
   virtual ~ItemPicker() = default;
   /// An index into runtime.items(); nullopt stops the run.
   virtual std::optional<std::size_t> pick(const Runtime& runtime) = 0;
+  /// The date the last pick fires at, when it lies in the item's window (a replay's recorded
+  /// date); otherwise, or without one, the window's earliest.
+  virtual std::optional<TimeValue> date() const { return std::nullopt; }
 };
 
 /// One run's random stream, semantics and choice of items: the reference engine's random race
@@ -170,6 +173,10 @@ inline std::optional<std::pair<std::size_t, TimeValue>> Scheduler::choose(bool& 
     const std::optional<std::size_t> picked = picker_->pick(runtime_);
     if (!picked) return std::nullopt;
     const Interval& window = runtime_.items()[*picked].constraint.interval;
+    const std::optional<TimeValue> wanted = picker_->date();
+    if (wanted && *wanted >= runtime_.state().now && window.contains(*wanted)) {
+      return std::pair{*picked, *wanted};
+    }
     return std::pair{*picked, earliest(window, runtime_.state().now)};
   }
   if (shared_.stochastic) return race(failed);

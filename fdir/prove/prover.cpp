@@ -50,6 +50,7 @@ struct Prover::State {
   std::optional<z3::expr> deadlock;  // DIS, once a query reads it
   std::size_t traps = 0;
   bool untimed = true;
+  std::vector<AssumptionSite> assumptions;  // in the invariant
 };
 
 Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
@@ -67,6 +68,19 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
 }
 
 Prover::~Prover() = default;
+
+void Prover::assume(const std::vector<AssumptionSource>& sources) {
+  State& s = *state_;
+  std::vector<Assumption> all;
+  for (const AssumptionSource& source : sources) {
+    for (Assumption& a : parse_assumptions(source, s.variables)) all.push_back(std::move(a));
+  }
+  check_inductive(all, s.variables, s.encoder, s.invariant, s.traps);
+  for (const Assumption& a : all) {
+    s.invariant.push_back(a.formula);
+    s.assumptions.push_back(a.site);
+  }
+}
 
 std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcome& out) {
   State& s = *state_;
@@ -177,6 +191,7 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   if (!candidate) {
     out.verdict = all ? Verdict::Holds : Verdict::Fails;
     out.method = "invariants";
+    out.assumptions = s.assumptions;
     return out;
   }
   out.candidate = candidate->text;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "fdir/prove/assumptions.h"
 #include "fdir/search/counterexample_search.h"
 #include "monitors/online/online_monitor.h"
 #include "monitors/property/ast.h"
@@ -50,6 +51,8 @@ struct QueryOutcome {
   std::vector<TraceState> trace;  // counterexample (A[]) or witness (E<>)
   std::uint64_t explored_states = 0;
   std::string note;  // why a query is open, or what was dropped from the model
+  /// The assumptions (checked inductive) a verdict by invariants rests on; empty otherwise.
+  std::vector<AssumptionSite> assumptions;
   double seconds_invariants = 0, seconds_smt = 0, seconds_search = 0;
 };
 
@@ -67,6 +70,11 @@ class Prover {
   /// `constants`). E<> phi holds when A[] !phi does not. Throws UnsupportedModel for a
   /// predicate the encoding does not cover.
   QueryOutcome prove(const monitors::Query& query, const monitors::Bindings& constants);
+
+  /// Adds the assertions of `sources` to the invariants of every later query, once shown to
+  /// hold initially and to be inductive (together) relative to the invariants; throws
+  /// AssumptionError, using none of them, when they are not.
+  void assume(const std::vector<AssumptionSource>& sources);
 
  private:
   struct State;

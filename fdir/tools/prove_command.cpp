@@ -1,12 +1,17 @@
 // `smcbip prove`: loading, proving each query, and the report (human table or JSON).
 #include "fdir/tools/prove_command.h"
 
+#include <algorithm>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
 
 #include "bipc/exit_codes.h"
 #include "bipc/options.h"
 #include "fdir/errors.h"
+#include "fdir/tools/prove_trace.h"
 #include "monitors/monitors.h"
 #include "smc/tools/model_loading.h"
 
@@ -34,10 +39,17 @@ void print_trace(std::ostream& out, const std::vector<fdir::TraceState>& trace) 
   }
 }
 
+/// `, under 2 assumptions` when the verdict rests on some.
+std::string assumptions_text(const QueryOutcome& o) {
+  if (o.assumptions.empty()) return "";
+  const std::size_t n = o.assumptions.size();
+  return ", under " + std::to_string(n) + (n == 1 ? " assumption" : " assumptions");
+}
+
 void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutcome& o) {
-  out << monitors::to_string(q) << "  " << verdict_text(o.verdict) << " (" << o.method << "; traps "
-      << o.traps << ", component invariants " << o.component_invariants << ", net transitions "
-      << o.net_transitions << ")\n";
+  out << monitors::to_string(q) << "  " << verdict_text(o.verdict) << " (" << o.method
+      << assumptions_text(o) << "; traps " << o.traps << ", component invariants "
+      << o.component_invariants << ", net transitions " << o.net_transitions << ")\n";
   if (!o.trace.empty()) {
     out << "  " << (q.kind == monitors::Query::Kind::Invariant ? "counterexample" : "witness")
         << " (" << o.trace.size() - 1 << (o.trace.size() == 2 ? " step" : " steps") << "):\n";
@@ -63,6 +75,18 @@ nlohmann::json trace_json(const std::vector<fdir::TraceState>& trace) {
   return steps;
 }
 
+nlohmann::json assumptions_json(const QueryOutcome& o) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const fdir::AssumptionSite& a : o.assumptions) {
+    out.push_back({{"file", a.file},
+                   {"line", a.line},
+                   {"column", a.column},
+                   {"assertion", a.text},
+                   {"inductive", true}});
+  }
+  return out;
+}
+
 nlohmann::json outcome_json(const monitors::Query& q, const QueryOutcome& o) {
   return {{"query", monitors::to_string(q)},
           {"verdict", verdict_text(o.verdict)},
@@ -71,6 +95,7 @@ nlohmann::json outcome_json(const monitors::Query& q, const QueryOutcome& o) {
            {{"traps", o.traps},
             {"component_invariants", o.component_invariants},
             {"net_transitions", o.net_transitions}}},
+          {"assumptions", assumptions_json(o)},
           {"candidate", o.candidate},
           {"trace", trace_json(o.trace)},
           {"explored_states", o.explored_states},
@@ -91,6 +116,29 @@ int report_unsupported(const fdir::UnsupportedModel& e, const bipc::ir::System& 
     where = bipc::position_text(system.source_files[e.at->file], e.at->line, e.at->column);
   }
   std::cerr << where << ": error: " << e.what() << "\n";
+  return exit_codes::kInputError;
+}
+
+/// The assumption files' texts; nullopt (error printed) when one cannot be read.
+std::optional<std::vector<fdir::AssumptionSource>> read_assumptions(
+    const std::vector<std::string>& files) {
+  std::vector<fdir::AssumptionSource> out;
+  for (const std::string& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    if (in) text << in.rdbuf();
+    if (!in) {
+      std::cerr << file << ": error: cannot read the assumption file\n";
+      return std::nullopt;
+    }
+    out.push_back({file, text.str()});
+  }
+  return out;
+}
+
+int report_assumption(const fdir::AssumptionError& e) {
+  std::cerr << (e.line ? bipc::position_text(e.file, e.line, e.column) : e.file)
+            << ": error: " << e.what() << "\n";
   return exit_codes::kInputError;
 }
 
@@ -117,6 +165,16 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
                   "rounds of post-condition iteration per atom type (any number is sound)")
       ->check(cli::integer_in(0, 100))
       ->option_text("N (default: " + std::to_string(o.component_iterations) + ")");
+  command
+      .add_option("--assume", prove.assumptions,
+                  "an SMT-LIB2 file of assertions over the model's places and data, used once "
+                  "shown inductive (repeatable)")
+      ->type_name("FILE.smt2");
+  command
+      .add_option("--trace-out", prove.trace_out,
+                  "write the first counterexample or witness as a JSON-lines trace, which "
+                  "smcbip simulate --replay follows")
+      ->type_name("FILE");
   cli::add_json_flag(command, prove.json);
   command.footer(
       "Priorities are dropped and clocks ignored by the invariants, which over-approximates the "
@@ -143,14 +201,20 @@ int run_prove(const ProveCommand& prove) {
     return exit_codes::kInputError;
   }
   const monitors::Bindings constants = monitors::constant_values(parsed.file);
+  const std::optional<std::vector<fdir::AssumptionSource>> assumptions =
+      read_assumptions(prove.assumptions);
+  if (!assumptions) return exit_codes::kInputError;
   std::vector<QueryOutcome> outcomes;
   try {
     fdir::Prover prover(*system, prove.options);
+    prover.assume(*assumptions);
     for (const monitors::Query& q : parsed.file.queries) {
       outcomes.push_back(prover.prove(q, constants));
     }
   } catch (const fdir::UnsupportedModel& e) {
     return report_unsupported(e, *system, parsed, prove.model.file);
+  } catch (const fdir::AssumptionError& e) {
+    return report_assumption(e);
   }
   int code = 0;
   nlohmann::json all = nlohmann::json::array();
@@ -163,6 +227,16 @@ int run_prove(const ProveCommand& prove) {
   }
   if (prove.json)
     std::cout << nlohmann::json{{"model", prove.model.file}, {"queries", all}}.dump(2) << "\n";
+  if (!prove.trace_out.empty()) {
+    const auto traced = std::find_if(outcomes.begin(), outcomes.end(),
+                                     [](const QueryOutcome& o) { return !o.trace.empty(); });
+    if (traced == outcomes.end()) {
+      std::cerr << "smcbip: no query has a counterexample or witness: " << prove.trace_out
+                << " is not written\n";
+    } else if (const int failed = write_prove_trace(prove.trace_out, *system, traced->trace)) {
+      return failed;
+    }
+  }
   return code;
 }
 

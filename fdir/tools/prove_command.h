@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "bipc/bipc.h"
 #include "fdir/prove/prover.h"
@@ -15,6 +16,8 @@ struct ProveCommand {
   std::string properties;
   bool json = false;
   fdir::ProveOptions options;
+  std::vector<std::string> assumptions;  // --assume: SMT-LIB2 files
+  std::string trace_out;                 // --trace-out: JSON-lines file of the first trace
 };
 
 /// The options of `prove`.

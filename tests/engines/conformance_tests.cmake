@@ -17,7 +17,7 @@ set(ENGINES_REALTIME_TEST_SOURCES
   conformance_externs.cpp
   trace_oracles.cpp)
 list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp builtins_test.cpp)
-list(APPEND ENGINES_TEST_SOURCES explore_test.cpp interactive_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES explore_test.cpp interactive_test.cpp replay_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES limits_test.cpp maximal_interaction_test.cpp
   model_interface_test.cpp)
 
