@@ -6,7 +6,10 @@
 # action ST08 performs, a TC released by ST11 at its time, and a malformed TC refused with
 # TM[1,2].
 #
-# Usage: onboard_e2e_test.sh PUS_ONBOARD PUS_CONSOLE BIPC MODEL MISSION SCRIPT EXPECTED
+# PACKETS, if given, receives the console's --packet-log (every TM received, as hex) once the
+# run is checked, for pus.onboard_sim to compare with the model simulated.
+#
+# Usage: onboard_e2e_test.sh PUS_ONBOARD PUS_CONSOLE BIPC MODEL MISSION SCRIPT EXPECTED [PACKETS]
 set -euo pipefail
 onboard=$1
 console=$2
@@ -15,6 +18,8 @@ model=$4
 mission=$5
 script=$6
 expected=$7
+packets=${8:-}
+[[ -z $packets ]] || rm -f "$packets"
 
 work=$(mktemp -d)
 pid=""
@@ -50,7 +55,8 @@ hash=$("$bipc" hash "$model" --root 'Onboard()')
 head -1 "$work/onboard.out" | grep -qx "pus_onboard: running model $hash" ||
   fail "pus_onboard does not announce bipc hash's $hash"
 
-"$console" script "$script" --port "$port" --wait 300 --log "$work/log" >/dev/null ||
+"$console" script "$script" --port "$port" --wait 300 --log "$work/log" \
+  --packet-log "$work/packets" >/dev/null ||
   fail "pus-console exited with $?"
 wait "$pid" || fail "pus_onboard exited with $?"
 pid=""
@@ -76,4 +82,5 @@ echo "$hk" | awk 'NR > 1 { gap = int(($1 - last) * 1000 + 0.5); if (gap < 199 ||
 grep -qE '^[0-9]+ +TM  9    2    2\.000 ' "$work/log" || fail "no time report at 2 s"
 # The scheduled ping ran at 4 s on board.
 grep -qE '^[0-9]+ +TM  17   2    4\.0[0-4][0-9] ' "$work/log" || fail "the [11,4] ping not at 4 s"
+[[ -z $packets ]] || cp "$work/packets" "$packets"
 echo "pus_onboard: end-to-end run checked"
