@@ -3,8 +3,8 @@
 # model bipc hash names, the console runs onboard_e2e.tc, and its log must show the rows of
 # onboard_e2e.expected (the periodic reports apart): the ping's verification, housekeeping
 # reports every 200 ms while enabled, an ST12 limit violation raising an ST05 event whose ST19
-# action ST08 performs, a TC released by ST11 at its time, and a malformed TC refused with
-# TM[1,2].
+# action ST08 performs, a TC released by ST11 at its time, a malformed TC refused with
+# TM[1,2], and ST23 creating a file in the repository root the test adds to the mission.
 #
 # PACKETS, if given, receives the console's --packet-log (every TM received, as hex) once the
 # run is checked, for pus.onboard_sim to compare with the model simulated.
@@ -28,6 +28,9 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+# The bundled mission with a repository root of the test's own.
+mkdir -p "$work/files/logs"
+sed '1s|{|{"file_repository": "'"$work/files"'",|' "$mission" >"$work/mission.json"
 
 fail() {
   echo "FAIL: $*" >&2
@@ -42,7 +45,7 @@ status=0
 grep -qx "$work/bad.json:2:20: error: unknown key \"colour\"" "$work/bad.err" ||
   fail "the refused mission's error: $(cat "$work/bad.err")"
 
-"$onboard" --mission "$mission" --port 0 --duration-ms 5500 >"$work/onboard.out" 2>&1 &
+"$onboard" --mission "$work/mission.json" --port 0 --duration-ms 5500 >"$work/onboard.out" 2>&1 &
 pid=$!
 for _ in $(seq 100); do
   grep -q 'listening on udp' "$work/onboard.out" && break
@@ -60,7 +63,7 @@ head -1 "$work/onboard.out" | grep -qx "pus_onboard: running model $hash" ||
   fail "pus-console exited with $?"
 wait "$pid" || fail "pus_onboard exited with $?"
 pid=""
-tail -1 "$work/onboard.out" | grep -q ': 7 TCs received (0 dropped)' ||
+tail -1 "$work/onboard.out" | grep -q ': 9 TCs received (0 dropped)' ||
   fail "pus_onboard's summary: $(tail -1 "$work/onboard.out")"
 
 # The rows but the periodic ones, without the index, time and TM sequence count columns.
@@ -82,5 +85,7 @@ echo "$hk" | awk 'NR > 1 { gap = int(($1 - last) * 1000 + 0.5); if (gap < 199 ||
 grep -qE '^[0-9]+ +TM  9    2    2\.000 ' "$work/log" || fail "no time report at 2 s"
 # The scheduled ping ran at 4 s on board.
 grep -qE '^[0-9]+ +TM  17   2    4\.0[0-4][0-9] ' "$work/log" || fail "the [11,4] ping not at 4 s"
+# [23,1] made the file, its maximum size of octets.
+[[ $(stat -c %s "$work/files/logs/e2e.bin") == 64 ]] || fail "[23,1] did not create logs/e2e.bin"
 [[ -z $packets ]] || cp "$work/packets" "$packets"
 echo "pus_onboard: end-to-end run checked"

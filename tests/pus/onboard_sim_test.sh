@@ -21,14 +21,18 @@ deployed=$6
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The bundled mission with a repository root of the test's own, as pus.onboard_e2e runs it.
+mkdir -p "$work/files/logs"
+sed '1s|{|{"file_repository": "'"$work/files"'",|' "$mission" >"$work/mission.json"
+
 fail() {
   echo "FAIL: $*" >&2
   exit 1
 }
 
-"$sim" --mission "$mission" --script "$script" --wait 300 --log "$work/log" \
+"$sim" --mission "$work/mission.json" --script "$script" --wait 300 --log "$work/log" \
   --packet-log "$work/packets" >"$work/out" || fail "pus_onboard_sim exited with $?"
-tail -1 "$work/out" | grep -q ': 7 TCs received (0 dropped)' ||
+tail -1 "$work/out" | grep -q ': 9 TCs received (0 dropped)' ||
   fail "pus_onboard_sim's summary: $(tail -1 "$work/out")"
 
 # The rows as onboard_e2e_test.sh compares them.
@@ -37,6 +41,8 @@ tail -n +2 "$work/log" | grep -v -E '^[0-9]+ +TM  (3    25|9    2) ' | cut -c7-2
 grep -v '^#' "$expected" | diff - "$work/rows" >&2 || fail "the simulation's log differs from $expected"
 # On a virtual clock the times are exact: the scheduled ping at 4 s plus the model's delays.
 grep -qE '^[0-9]+ +TM  17   2    4\.00[0-9] ' "$work/log" || fail "the [11,4] ping not at 4 s"
+
+[[ $(stat -c %s "$work/files/logs/e2e.bin") == 64 ]] || fail "[23,1] did not create logs/e2e.bin"
 
 [[ -s $deployed ]] || fail "no packets of the deployed run: $deployed"
 "$compare" "$deployed" "$work/packets" --count 3,25=4..6 --count 9,2=4..5 ||
