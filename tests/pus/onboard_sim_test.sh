@@ -30,6 +30,15 @@ fail() {
   exit 1
 }
 
+# A refused script line: located, exit 2, no log written.
+printf '17 1\n23 1 --file a\n' >"$work/bad.tc"
+status=0
+"$sim" --mission "$work/mission.json" --script "$work/bad.tc" --log "$work/bad.log" \
+  2>"$work/bad.err" >/dev/null || status=$?
+[[ $status == 2 && ! -e $work/bad.log ]] || fail "a refused script: exit $status"
+grep -q "^$work/bad.tc:2:14: error: .*got no --size$" "$work/bad.err" ||
+  fail "the refused script's error: $(cat "$work/bad.err")"
+
 "$sim" --mission "$work/mission.json" --script "$script" --wait 300 --log "$work/log" \
   --packet-log "$work/packets" >"$work/out" || fail "pus_onboard_sim exited with $?"
 tail -1 "$work/out" | grep -q ': 9 TCs received (0 dropped)' ||

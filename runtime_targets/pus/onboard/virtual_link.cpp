@@ -39,7 +39,9 @@ void VirtualLink::run_until(engines::TimeValue t) {
 std::optional<std::vector<std::uint8_t>> VirtualLink::receive(std::chrono::milliseconds timeout) {
   const engines::TimeValue deadline = component_.now() + std::chrono::nanoseconds(timeout).count();
   while (tms_.empty() && component_.now() < deadline) {
-    run_until(std::min(deadline, component_.now() + cycle_.count()));
+    const engines::TimeValue before = component_.now();
+    run_until(std::min(deadline, before + cycle_.count()));
+    if (component_.now() == before) break;  // the run is over: time no longer passes
   }
   if (tms_.empty()) return std::nullopt;
   std::vector<std::uint8_t> tm = std::move(tms_.front());
