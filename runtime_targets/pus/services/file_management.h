@@ -19,7 +19,9 @@ inline constexpr std::uint64_t kMaxCreatedFileSize = 1 << 20;
 /// ECSS-E-ST-70-41C 6.23 on a host file system. A path stays below the root: the repository
 /// path and file names are relative, made of components that are neither empty, `.` nor `..`
 /// (a file name is a single component), printable ASCII; anything else is InvalidArgument
-/// (datum: the field, 1 repository, 2 file, 3 target repository, 4 target file). What the host
+/// (datum: the field, 1 repository, 2 file, 3 target repository, 4 target file). A file that
+/// is a symbolic link is not followed (O_NOFOLLOW); links among the repositories' folders are
+/// the root owner's to make, and are followed. What the host
 /// refuses is FileRefused (datum: its errno). Paths are built in a fixed buffer: no allocation
 /// after construction.
 class FileManagement {
