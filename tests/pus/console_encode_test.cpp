@@ -69,6 +69,14 @@ TEST(PusConsoleEncode, RoundTripsEverySupportedTcSubtype) {
   check_round_trip("19 4 --event 12", "TC[19,4] enable event-action definitions: events 12");
   check_round_trip("20 1 --param 7 8", "TC[20,1] report parameter values: parameters 7, 8");
   check_round_trip("20 3 --param 7=42", "TC[20,3] set parameter values: values 7=42");
+  check_round_trip("23 1 --repo logs --file a.bin --size 0x100",
+                   "TC[23,1] create a file: repository 'logs', file 'a.bin', maximum size 256");
+  check_round_trip("23 2 --file a.bin", "TC[23,2] delete a file: repository '', file 'a.bin'");
+  check_round_trip("23 3 --repo a/b --file c",
+                   "TC[23,3] report the attributes of a file: repository 'a/b', file 'c'");
+  check_round_trip("23 14 --operation 2 --repo a --file b --to-file c",
+                   "TC[23,14] copy a file: operation 2, repository 'a', file 'b' to repository "
+                   "'', file 'c'");
 }
 
 // TC[17,1] from the primary header (CCSDS 133.0-B-2 4.1.3) and the TC secondary header
@@ -129,6 +137,13 @@ TEST(PusConsoleEncode, RefusalsNameTheWordAndWhatWasExpected) {
   expect_refusal("17 1 --seq 16384", "--seq", "16384", "from 0 to 16383");
   expect_refusal("11 4 --release 5=1800", "--release", "5=1800", "expected a whole TC in hex");
   expect_refusal("11 4 --release 5=18zz", "--release", "5=18zz", "expected a hex digit");
+  expect_refusal("23 1 --file a", "--size", "", "expected [--repo PATH] --file NAME --size N");
+  expect_refusal("23 14 --operation 1 --file a", "--to-file", "", "got no --to-file");
+  expect_refusal("23 2 --file a --size 3", "--size", "", "takes no such field");
+  expect_refusal("23 2 --file " + std::string(65, 'x'), "--file", std::string(65, 'x'),
+                 "expected at most 64 octets");
+  expect_refusal("23 14 --operation 65536 --file a --to-file b", "--operation", "65536",
+                 "expected an operation ID");
 }
 
 TEST(PusConsoleEncode, EncodeWordsReportsAUsageError) {

@@ -193,12 +193,14 @@ TEST(PusConsoleUdp, AWaitLineReceivesBeforeTheNextTc) {
 TEST(PusConsoleUdp, TheExecutableRunsAScriptAndLogsTheTable) {
   char folder[] = "/tmp/pus_console_XXXXXX";
   ASSERT_NE(::mkdtemp(folder), nullptr);
-  const std::string script = std::string(folder) + "/ping.tc", log = std::string(folder) + "/log";
+  const std::string script = std::string(folder) + "/ping.tc", log = std::string(folder) + "/log",
+                    packets = std::string(folder) + "/packets";
   std::ofstream(script) << "# ping\n17 1 --apid 0x12 --seq 7\n";
   Responder responder;
   std::thread server([&] { responder.serve(); });
   const std::string command = std::string(PUS_CONSOLE_PATH) + " script " + script + " --port " +
-                              std::to_string(responder.port()) + " --wait 800 --log " + log;
+                              std::to_string(responder.port()) + " --wait 800 --log " + log +
+                              " --packet-log " + packets;
   std::string out;
   FILE* pipe = ::popen(command.c_str(), "r");
   EXPECT_NE(pipe, nullptr);
@@ -219,8 +221,21 @@ TEST(PusConsoleUdp, TheExecutableRunsAScriptAndLogsTheTable) {
                      "TM[1,7] completion success of TC apid 0x12 seq 7\n"),
             std::string::npos)
       << out;
+  // The packet log: the three TMs received, one a line, each the octets the table decodes.
+  std::istringstream lines(read_all(packets));
+  std::vector<std::string> received;
+  for (std::string line; std::getline(lines, line);) received.push_back(line);
+  ASSERT_EQ(received.size(), 3u);
+  for (std::size_t i = 0; i < received.size(); ++i) {
+    std::vector<std::uint8_t> bytes;
+    HexError error;
+    ASSERT_TRUE(parse_hex(received[i], bytes, error)) << received[i];
+    const Row row = decode_bytes(bytes, Config{});
+    EXPECT_NE(out.find(row.information), std::string::npos) << row.information;
+  }
   std::remove(script.c_str());
   std::remove(log.c_str());
+  std::remove(packets.c_str());
   ::rmdir(folder);
 }
 
@@ -228,6 +243,7 @@ TEST(PusConsoleUdp, MalformedDatagramsBecomeMalformedRows) {
   std::ostringstream out;
   Session session(Config{}, out, nullptr);
   session.received(std::vector<std::uint8_t>{0x08, 0x12, 0xC0});
+  EXPECT_EQ(session.packets(), "0812c0\n");  // kept as received, for --packet-log
   ASSERT_EQ(session.rows().size(), 1u);
   EXPECT_EQ(session.rows()[0].status, "malformed");
   EXPECT_EQ(session.rows()[0].information.rfind("too-short at byte ", 0), 0u)

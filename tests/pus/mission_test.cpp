@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 
 namespace smcbip::pus::mission {
 namespace {
@@ -148,6 +151,23 @@ TEST(PusMission, EveryErrorIsReported) {
   ASSERT_EQ(result.diagnostics.size(), 6U);
   EXPECT_EQ(format_diagnostics("m.json", {result.diagnostics.back()}),
             "m.json:1:74: error: unknown severity \"dire\" (informative, low, medium, high)\n");
+}
+
+TEST(PusMission, FileRepositoryIsResolvedAgainstTheMissionsFolder) {
+  EXPECT_TRUE(parse_mission(with("")).mission->file_repository.empty());
+  // `  "file_repository": ""` on line 7: the key starts at column 3.
+  EXPECT_EQ(refusal(with(",\n  \"file_repository\": \"\"")), "7:3: expected a folder, got \"\"");
+  const auto folder = std::filesystem::temp_directory_path() / "pus_mission_repository_test";
+  std::filesystem::create_directories(folder);
+  for (const auto& [root, expected] : {std::pair{"files/a", (folder / "files/a").string()},
+                                       std::pair{"/srv/x", std::string("/srv/x")}}) {
+    std::ofstream(folder / "m.json")
+        << with(",\n  \"file_repository\": \"" + std::string(root) + "\"");
+    const LoadResult result = load_mission((folder / "m.json").string());
+    ASSERT_TRUE(result.mission.has_value());
+    EXPECT_EQ(result.mission->file_repository, expected);
+  }
+  std::filesystem::remove_all(folder);
 }
 
 TEST(PusMission, UnreadableFile) {

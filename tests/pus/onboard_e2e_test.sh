@@ -3,10 +3,13 @@
 # model bipc hash names, the console runs onboard_e2e.tc, and its log must show the rows of
 # onboard_e2e.expected (the periodic reports apart): the ping's verification, housekeeping
 # reports every 200 ms while enabled, an ST12 limit violation raising an ST05 event whose ST19
-# action ST08 performs, a TC released by ST11 at its time, and a malformed TC refused with
-# TM[1,2].
+# action ST08 performs, a TC released by ST11 at its time, a malformed TC refused with
+# TM[1,2], and ST23 creating a file in the repository root the test adds to the mission.
 #
-# Usage: onboard_e2e_test.sh PUS_ONBOARD PUS_CONSOLE BIPC MODEL MISSION SCRIPT EXPECTED
+# PACKETS, if given, receives the console's --packet-log (every TM received, as hex) once the
+# run is checked, for pus.onboard_sim to compare with the model simulated.
+#
+# Usage: onboard_e2e_test.sh PUS_ONBOARD PUS_CONSOLE BIPC MODEL MISSION SCRIPT EXPECTED [PACKETS]
 set -euo pipefail
 onboard=$1
 console=$2
@@ -15,6 +18,8 @@ model=$4
 mission=$5
 script=$6
 expected=$7
+packets=${8:-}
+[[ -z $packets ]] || rm -f "$packets"
 
 work=$(mktemp -d)
 pid=""
@@ -23,6 +28,9 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+# The bundled mission with a repository root of the test's own.
+mkdir -p "$work/files/logs"
+sed '1s|{|{"file_repository": "'"$work/files"'",|' "$mission" >"$work/mission.json"
 
 fail() {
   echo "FAIL: $*" >&2
@@ -37,7 +45,7 @@ status=0
 grep -qx "$work/bad.json:2:20: error: unknown key \"colour\"" "$work/bad.err" ||
   fail "the refused mission's error: $(cat "$work/bad.err")"
 
-"$onboard" --mission "$mission" --port 0 --duration-ms 5500 >"$work/onboard.out" 2>&1 &
+"$onboard" --mission "$work/mission.json" --port 0 --duration-ms 5500 >"$work/onboard.out" 2>&1 &
 pid=$!
 for _ in $(seq 100); do
   grep -q 'listening on udp' "$work/onboard.out" && break
@@ -50,11 +58,12 @@ hash=$("$bipc" hash "$model" --root 'Onboard()')
 head -1 "$work/onboard.out" | grep -qx "pus_onboard: running model $hash" ||
   fail "pus_onboard does not announce bipc hash's $hash"
 
-"$console" script "$script" --port "$port" --wait 300 --log "$work/log" >/dev/null ||
+"$console" script "$script" --port "$port" --wait 300 --log "$work/log" \
+  --packet-log "$work/packets" >/dev/null ||
   fail "pus-console exited with $?"
 wait "$pid" || fail "pus_onboard exited with $?"
 pid=""
-tail -1 "$work/onboard.out" | grep -q ': 7 TCs received (0 dropped)' ||
+tail -1 "$work/onboard.out" | grep -q ': 9 TCs received (0 dropped)' ||
   fail "pus_onboard's summary: $(tail -1 "$work/onboard.out")"
 
 # The rows but the periodic ones, without the index, time and TM sequence count columns.
@@ -76,4 +85,7 @@ echo "$hk" | awk 'NR > 1 { gap = int(($1 - last) * 1000 + 0.5); if (gap < 199 ||
 grep -qE '^[0-9]+ +TM  9    2    2\.000 ' "$work/log" || fail "no time report at 2 s"
 # The scheduled ping ran at 4 s on board.
 grep -qE '^[0-9]+ +TM  17   2    4\.0[0-4][0-9] ' "$work/log" || fail "the [11,4] ping not at 4 s"
+# [23,1] made the file, its maximum size of octets.
+[[ $(stat -c %s "$work/files/logs/e2e.bin") == 64 ]] || fail "[23,1] did not create logs/e2e.bin"
+[[ -z $packets ]] || cp "$work/packets" "$packets"
 echo "pus_onboard: end-to-end run checked"

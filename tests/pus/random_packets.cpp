@@ -61,6 +61,27 @@ Verification RandomPackets::verification(const MessageType& type) {
   return v;
 }
 
+FixedBytes<kMaxFileString> RandomPackets::file_string() {
+  FixedBytes<kMaxFileString> text;
+  const std::size_t n = below(kMaxFileString + 1);
+  for (std::size_t i = 0; i < n; ++i) text.push_back(static_cast<std::uint8_t>(bits(1)));
+  return text;
+}
+
+/// Only the fields the subtype carries are set, so that a round trip gives the same value.
+FileRequest RandomPackets::file_request(const MessageType& type) {
+  FileRequest f;
+  if (type.subtype == 14) f.operation_id = bits(kFileOperationIdBytes);
+  f.repository = file_string();
+  f.file = file_string();
+  if (type.subtype == 14) {
+    f.target_repository = file_string();
+    f.target_file = file_string();
+  }
+  if (type.subtype == 1 || type.subtype == 4) f.max_size = bits(kFileSizeBytes);
+  return f;
+}
+
 Activities RandomPackets::activities(const MessageType& type) {
   Activities a;
   const std::size_t n = below(kMaxRequests + 1);
@@ -122,6 +143,8 @@ Message RandomPackets::message(const MessageType& type) {
       return TimeReport{static_cast<std::uint8_t>(bits(1)), time()};
     case Shape::Activities:
       return activities(type);
+    case Shape::FileRequest:
+      return file_request(type);
   }
   return NoData{};
 }

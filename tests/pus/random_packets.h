@@ -29,6 +29,8 @@ class RandomPackets {
   FixedBytes<kMaxEmbeddedTc> embedded_tc();
   Verification verification(const MessageType& type);
   Activities activities(const MessageType& type);
+  FileRequest file_request(const MessageType& type);
+  FixedBytes<kMaxFileString> file_string();
 
   std::mt19937_64 rng_;
   Config config_;

@@ -74,6 +74,27 @@ std::string activities_text(std::uint8_t service, const Activities& a, const Con
   });
 }
 
+/// A path or file name as text, octets outside printable ASCII in hex.
+std::string file_string(const FixedBytes<kMaxFileString>& text) {
+  std::string out = "'";
+  for (std::uint8_t c : text) {
+    out += c >= 0x20 && c < 0x7F && c != '\\' ? std::string(1, static_cast<char>(c))
+                                              : "\\x" + to_hex(std::span(&c, 1));
+  }
+  return out + "'";
+}
+
+std::string file_text(std::uint8_t subtype, const FileRequest& f) {
+  std::string text = subtype == 14 ? "operation " + std::to_string(f.operation_id) + ", " : "";
+  text += "repository " + file_string(f.repository) + ", file " + file_string(f.file);
+  if (subtype == 14) {
+    text += " to repository " + file_string(f.target_repository) + ", file " +
+            file_string(f.target_file);
+  }
+  if (subtype == 1 || subtype == 4) text += ", maximum size " + std::to_string(f.max_size);
+  return text;
+}
+
 std::string data_text(std::uint8_t service, std::uint8_t subtype, const Message& message,
                       const Config& config) {
   return std::visit(
@@ -101,6 +122,8 @@ std::string data_text(std::uint8_t service, std::uint8_t subtype, const Message&
                  format_time(m.time, config);
         } else if constexpr (std::is_same_v<M, Activities>) {
           return activities_text(service, m, config);
+        } else if constexpr (std::is_same_v<M, FileRequest>) {
+          return file_text(subtype, m);
         } else {
           return "";
         }

@@ -18,6 +18,11 @@ class Link {
   virtual void send(std::span<const std::uint8_t> bytes) = 0;
   /// The next packet received within `timeout`, or nothing when the time runs out.
   virtual std::optional<std::vector<std::uint8_t>> receive(std::chrono::milliseconds timeout) = 0;
+  /// The clock the session's pauses are measured on: the real one, unless the other end runs
+  /// on a virtual clock that receive() advances (a simulation of the on-board program).
+  virtual std::chrono::steady_clock::time_point now() const {
+    return std::chrono::steady_clock::now();
+  }
 };
 
 /// A UDP socket connected to HOST:PORT (an IPv4 address, e.g. the loopback), bound to a port of

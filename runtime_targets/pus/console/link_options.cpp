@@ -22,6 +22,10 @@ void register_link_options(CLI::App& command, LinkOptions& options, bool port_re
       ->type_name("MS");
   command.add_option("--log", options.log, "write the table to this file as well")
       ->type_name("FILE");
+  command
+      .add_option("--packet-log", options.packet_log,
+                  "write every packet received to this file, as hex, one a line")
+      ->type_name("FILE");
 }
 
 std::unique_ptr<Link> open_link(const LinkOptions& options) {

@@ -16,9 +16,10 @@ struct LinkOptions {
   std::string host = "127.0.0.1";
   unsigned wait_ms = 1000;
   std::string log;
+  std::string packet_log;  ///< every packet received, as hex, one a line
 };
 
-/// Registers --port (required or not), --host, --wait and --log on a (sub)command.
+/// Registers --port (required or not), --host, --wait, --log and --packet-log on a (sub)command.
 void register_link_options(CLI::App& command, LinkOptions& options, bool port_required);
 
 /// The UDP link the options name, or none without a port.

@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "bipc/exit_codes.h"
 #include "bipc/options.h"
@@ -45,12 +46,20 @@ void write_file(const std::string& path, const std::string& text) {
   if (!bipc::write_file_atomically(path, text, error)) throw InputError(error);
 }
 
-/// Refuses a --log that could not be written before anything is sent.
-void check_writable(const std::string& path) {
-  std::string target, error;
-  if (!path.empty() && !bipc::output_target(path, target, error)) {
-    throw UsageError("--log: " + error);
+/// Refuses a --log or --packet-log that could not be written before anything is sent.
+void check_writable(const LinkOptions& options) {
+  for (const auto& [option, path] :
+       {std::pair{"--log", &options.log}, std::pair{"--packet-log", &options.packet_log}}) {
+    std::string target, error;
+    if (!path->empty() && !bipc::output_target(*path, target, error)) {
+      throw UsageError(std::string(option) + ": " + error);
+    }
   }
+}
+
+void write_logs(const LinkOptions& options, const Session& session) {
+  if (!options.log.empty()) write_file(options.log, session.table());
+  if (!options.packet_log.empty()) write_file(options.packet_log, session.packets());
 }
 
 int encode_command(const Arguments& args) {
@@ -80,16 +89,16 @@ int script_command(const Arguments& args) {
   const ParsedScript script = parse_script(read_file(args.script), Config{});
   for (const ScriptError& e : script.errors) std::cerr << format_error(args.script, e) << "\n";
   if (!script.errors.empty()) return exit_codes::kInputError;
-  check_writable(args.link.log);
+  check_writable(args.link);
   const std::unique_ptr<Link> link = open_link(args.link);
   Session session(Config{}, std::cout, link.get());
   run_script(script, session, std::chrono::milliseconds(args.link.wait_ms));
-  if (!args.link.log.empty()) write_file(args.link.log, session.table());
+  write_logs(args.link, session);
   return exit_codes::kSuccess;
 }
 
 int interactive_command(const Arguments& args) {
-  check_writable(args.link.log);
+  check_writable(args.link);
   const std::unique_ptr<Link> link = open_link(args.link);
   if (::isatty(STDIN_FILENO) != 0) {
     std::cerr << "pus-console: one TC per line as for encode (see interactive --help), "
@@ -99,7 +108,7 @@ int interactive_command(const Arguments& args) {
   const std::size_t refused =
       run_interactive(std::cin, "<stdin>", session, std::cerr,
                       std::chrono::milliseconds(args.link.wait_ms), Config{});
-  if (!args.link.log.empty()) write_file(args.link.log, session.table());
+  write_logs(args.link, session);
   return refused == 0 ? exit_codes::kSuccess : exit_codes::kInputError;
 }
 

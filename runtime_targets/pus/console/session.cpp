@@ -4,6 +4,8 @@
 #include <istream>
 #include <ostream>
 
+#include "console/hex.h"
+
 namespace smcbip::pus::console {
 
 Session::Session(const Config& config, std::ostream& out, Link* link)
@@ -40,10 +42,10 @@ void Session::send_raw(std::span<const std::uint8_t> bytes) {
 
 void Session::receive_for(std::chrono::milliseconds wait) {
   if (link_ == nullptr) return;
-  const auto deadline = std::chrono::steady_clock::now() + wait;
+  const auto deadline = link_->now() + wait;
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - link_->now());
     if (left.count() <= 0) return;
     auto packet = link_->receive(left);
     if (!packet) return;
@@ -53,6 +55,7 @@ void Session::receive_for(std::chrono::milliseconds wait) {
 
 void Session::received(std::span<const std::uint8_t> bytes) {
   const std::size_t index = rows_.size() + 1;
+  packets_ += to_hex(bytes) + "\n";
   auto packet = decode(bytes, config_);
   add(packet ? packet_row(index, packet.value(), config_)
              : malformed_row(index, bytes, packet.error()));

@@ -36,6 +36,8 @@ class Session {
   /// The table so far: the header then one line per row, each ending in a newline.
   const std::string& table() const { return table_; }
   const std::vector<Row>& rows() const { return rows_; }
+  /// Every packet received so far, as hex, one a line (what the table decodes, undecoded).
+  const std::string& packets() const { return packets_; }
 
  private:
   void add(const Row& row);
@@ -45,6 +47,7 @@ class Session {
   Link* link_;
   std::string table_;
   std::vector<Row> rows_;
+  std::string packets_;
 };
 
 /// Sends the TCs of a script in order, receiving during its pauses and, with a link, until

@@ -161,6 +161,34 @@ Message parameter_values(const TcWords& w, const Config& c) {
   return values;
 }
 
+FixedBytes<kMaxFileString> file_string(const std::string& option,
+                                       const std::optional<std::string>& word) {
+  FixedBytes<kMaxFileString> out;
+  if (!word) return out;
+  if (!out.assign(std::span(reinterpret_cast<const std::uint8_t*>(word->data()), word->size()))) {
+    throw TcSyntaxError(option, *word,
+                        option + ": expected at most " + std::to_string(kMaxFileString) +
+                            " octets, got " + std::to_string(word->size()));
+  }
+  return out;
+}
+
+Message file_request(const MessageType& type, const TcWords& w) {
+  FileRequest f;
+  f.repository = file_string("--repo", w.repo);
+  f.file = file_string("--file", w.file);
+  if (type.subtype == 1) {
+    f.max_size = to_uint("--size", *w.size, *w.size, max_of_width(kFileSizeBytes), "a size");
+  }
+  if (type.subtype == 14) {
+    f.operation_id = to_uint("--operation", *w.operation, *w.operation,
+                             max_of_width(kFileOperationIdBytes), "an operation ID");
+    f.target_repository = file_string("--to-repo", w.to_repo);
+    f.target_file = file_string("--to-file", w.to_file);
+  }
+  return f;
+}
+
 Message app_data(const MessageType& type, const TcWords& w, const Config& c) {
   switch (type.shape) {
     case Shape::IdList:
@@ -175,6 +203,8 @@ Message app_data(const MessageType& type, const TcWords& w, const Config& c) {
     case Shape::Activities:
       return type.service == 11 ? activities("--release", w.releases, c)
                                 : activities("--action", w.actions, c);
+    case Shape::FileRequest:
+      return file_request(type, w);
     default:
       return NoData{};
   }

@@ -15,7 +15,7 @@ struct GivenField {
   bool given;
 };
 
-std::array<GivenField, 9> given_fields(const TcWords& w) {
+std::array<GivenField, 15> given_fields(const TcWords& w) {
   return {{{"--sid", !w.sids.empty()},
            {"--event", !w.events.empty()},
            {"--pmon", !w.pmons.empty()},
@@ -24,27 +24,47 @@ std::array<GivenField, 9> given_fields(const TcWords& w) {
            {"--arg", !w.args.empty()},
            {"--rate", w.rate.has_value()},
            {"--release", !w.releases.empty()},
-           {"--action", !w.actions.empty()}}};
+           {"--action", !w.actions.empty()},
+           {"--repo", w.repo.has_value()},
+           {"--file", w.file.has_value()},
+           {"--size", w.size.has_value()},
+           {"--operation", w.operation.has_value()},
+           {"--to-repo", w.to_repo.has_value()},
+           {"--to-file", w.to_file.has_value()}}};
 }
 
-/// The field options a subtype takes, the one it requires (or none), and its syntax as --help
-/// writes it.
+/// The field options a subtype takes, those it requires, and its syntax as --help writes it.
 struct Fields {
   std::vector<std::string> options;
-  std::string required;
+  std::vector<std::string> required;
   std::string syntax;
 };
 
 Fields id_list_fields(std::uint8_t service) {
   switch (service) {
     case 3:
-      return {{"--sid"}, "", "--sid ID..."};
+      return {{"--sid"}, {}, "--sid ID..."};
     case 12:
-      return {{"--pmon"}, "", "--pmon ID..."};
+      return {{"--pmon"}, {}, "--pmon ID..."};
     case 20:
-      return {{"--param"}, "", "--param ID..."};
+      return {{"--param"}, {}, "--param ID..."};
     default:
-      return {{"--event"}, "", "--event ID..."};
+      return {{"--event"}, {}, "--event ID..."};
+  }
+}
+
+Fields file_fields(std::uint8_t subtype) {
+  switch (subtype) {
+    case 1:
+      return {{"--repo", "--file", "--size"},
+              {"--file", "--size"},
+              "[--repo PATH] --file NAME --size N"};
+    case 14:
+      return {{"--operation", "--repo", "--file", "--to-repo", "--to-file"},
+              {"--operation", "--file", "--to-file"},
+              "--operation ID [--repo PATH] --file NAME [--to-repo PATH] --to-file NAME"};
+    default:
+      return {{"--repo", "--file"}, {"--file"}, "[--repo PATH] --file NAME"};
   }
 }
 
@@ -53,16 +73,18 @@ Fields fields_of(const MessageType& type) {
     case Shape::IdList:
       return id_list_fields(type.service);
     case Shape::FunctionCall:
-      return {{"--function", "--arg"}, "--function", "--function ID [--arg ID=VALUE...]"};
+      return {{"--function", "--arg"}, {"--function"}, "--function ID [--arg ID=VALUE...]"};
     case Shape::ParameterValues:
-      return {{"--param"}, "", "--param ID=VALUE..."};
+      return {{"--param"}, {}, "--param ID=VALUE..."};
     case Shape::TimeReportRate:
-      return {{"--rate"}, "--rate", "--rate N"};
+      return {{"--rate"}, {"--rate"}, "--rate N"};
     case Shape::Activities:
-      return type.service == 11 ? Fields{{"--release"}, "", "--release TIME=HEX..."}
-                                : Fields{{"--action"}, "", "--action EVENT=HEX..."};
+      return type.service == 11 ? Fields{{"--release"}, {}, "--release TIME=HEX..."}
+                                : Fields{{"--action"}, {}, "--action EVENT=HEX..."};
+    case Shape::FileRequest:
+      return file_fields(type.subtype);
     default:
-      return {{}, "", "no fields"};
+      return {{}, {}, "no fields"};
   }
 }
 
@@ -87,10 +109,11 @@ void check_fields(const MessageType& type, const TcWords& words) {
     }
   }
   for (const GivenField& field : given_fields(words)) {
-    if (!field.given && field.name == fields.required) {
-      throw TcSyntaxError(fields.required, "",
+    if (!field.given && std::find(fields.required.begin(), fields.required.end(), field.name) !=
+                            fields.required.end()) {
+      throw TcSyntaxError(field.name, "",
                           type_name(type) + " (" + type.name + ") expected " + fields.syntax +
-                              ", got no " + fields.required);
+                              ", got no " + field.name);
     }
   }
 }

@@ -41,6 +41,14 @@ void register_tc_options(CLI::App& app, TcWords& words) {
                   "TIME=HEX");
   add_list_option(app, "--action", words.actions, "[19,1]: a TC run when an event occurs",
                   "EVENT=HEX");
+  add_text_option(app, "--repo", words.repo,
+                  "[23,x]: the repository path, under the repository root (default: the root)",
+                  "PATH");
+  add_text_option(app, "--file", words.file, "[23,x]: the file name", "NAME");
+  add_text_option(app, "--size", words.size, "[23,1]: the maximum file size (octets)", "N");
+  add_text_option(app, "--operation", words.operation, "[23,14]: the operation ID", "ID");
+  add_text_option(app, "--to-repo", words.to_repo, "[23,14]: the target repository path", "PATH");
+  add_text_option(app, "--to-file", words.to_file, "[23,14]: the target file name", "NAME");
   add_text_option(app, "--apid", words.apid, "the application process ID (default 0)", "N");
   add_text_option(app, "--seq", words.seq,
                   "the packet sequence count (default 0; in a script "
@@ -66,6 +74,10 @@ std::string tc_syntax_help() {
          "  19 4 --event ID...           enable event-action definitions\n"
          "  20 1 --param ID...           report parameter values\n"
          "  20 3 --param ID=VALUE...     set parameter values\n"
+         "  23 1 [--repo PATH] --file NAME --size N   create a file\n"
+         "  23 2|3 [--repo PATH] --file NAME          delete a file / report its attributes\n"
+         "  23 14 --operation ID [--repo PATH] --file NAME [--to-repo PATH] --to-file NAME\n"
+         "                               copy a file\n"
          "Each takes --apid N, --seq N, --source N and --ack FLAGS for its header.\n";
 }
 

@@ -18,6 +18,7 @@ struct TcWords {
   std::string service, subtype;
   std::vector<std::string> sids, events, pmons, params, args, releases, actions;
   std::optional<std::string> function, rate, apid, seq, source, ack;
+  std::optional<std::string> repo, file, size, operation, to_repo, to_file;  ///< ST23
 };
 
 /// Registers SERVICE, SUBTYPE, the field options and the header options on a (sub)command;

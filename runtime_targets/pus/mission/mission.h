@@ -113,6 +113,9 @@ struct Mission {
   std::uint16_t apid = 0;
   /// The [9,2] time report base period; a report every 2^rate periods.
   std::uint32_t time_report_period_ms = 1000;
+  /// The ST23 repository root folder (empty: no file management); load_mission() resolves a
+  /// relative one against the mission file's folder.
+  std::string file_repository;
   std::vector<Parameter> parameters;
   std::vector<HousekeepingStructure> housekeeping;
   std::vector<Event> events;

@@ -1,5 +1,6 @@
 // Reads the sections of a mission configuration in dependency order (parameters and events
 // before what refers to them), checking every ID, reference and limit.
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -58,8 +59,9 @@ std::optional<std::uint64_t> MissionReader::event_ref(const std::string& object,
 }
 
 void MissionReader::read_top() {
-  if (!reader_.object_with("", {"apid", "time_report_period_ms", "parameters", "housekeeping",
-                                "events", "functions", "monitoring", "event_actions"})) {
+  if (!reader_.object_with(
+          "", {"apid", "time_report_period_ms", "file_repository", "parameters", "housekeeping",
+               "events", "functions", "monitoring", "event_actions"})) {
     return;
   }
   if (const auto apid = reader_.unsigned_in("", "apid", 0, kMaxApid)) {
@@ -68,6 +70,14 @@ void MissionReader::read_top() {
   if (has("", "time_report_period_ms")) {
     if (const auto period = reader_.unsigned_in("", "time_report_period_ms", 1, kMaxPeriodMs)) {
       mission_.time_report_period_ms = static_cast<std::uint32_t>(*period);
+    }
+  }
+  if (has("", "file_repository")) {
+    if (const auto root = reader_.string("", "file_repository")) {
+      if (root->empty()) {
+        reader_.error(FieldReader::member("", "file_repository"), "expected a folder, got \"\"");
+      }
+      mission_.file_repository = *root;
     }
   }
   read_parameters();
@@ -182,7 +192,15 @@ LoadResult load_mission(const std::string& path, const Config& config) {
       return result;
     }
   }
-  return parse_mission(text.str(), config);
+  LoadResult result = parse_mission(text.str(), config);
+  if (result.mission && !result.mission->file_repository.empty()) {
+    const std::filesystem::path root(result.mission->file_repository);
+    if (root.is_relative()) {
+      result.mission->file_repository =
+          (std::filesystem::path(path).parent_path() / root).lexically_normal().string();
+    }
+  }
+  return result;
 }
 
 std::string format_diagnostics(const std::string& file,

@@ -137,6 +137,40 @@ Result<Message> read_activities(const MessageType& t, const Config& c, Reader& i
   return Message{activities};
 }
 
+Result<Done> read_string(FixedBytes<kMaxFileString>& out, Reader& in) {
+  const std::size_t at = in.offset();
+  auto length = in.uint(kFileStringLengthBytes);
+  if (!length) return length.error();
+  if (length.value() > kMaxFileString) {
+    return fail(Reason::CapacityExceeded, "string exceeds capacity", at);
+  }
+  auto text = in.take(length.value());
+  if (!text) return text.error();
+  out.assign(text.value());
+  return Done{};
+}
+
+/// ECSS-E-ST-70-41C 8.23.2: the fields of each ST23 subtype, in order.
+Result<Message> read_file_request(const MessageType& t, Reader& in) {
+  FileRequest f;
+  if (t.subtype == 14) {
+    auto id = in.uint(kFileOperationIdBytes);
+    if (!id) return id.error();
+    f.operation_id = id.value();
+  }
+  SMCBIP_PUS_TRY(read_string(f.repository, in));
+  SMCBIP_PUS_TRY(read_string(f.file, in));
+  if (t.subtype == 14) {
+    SMCBIP_PUS_TRY(read_string(f.target_repository, in));
+    SMCBIP_PUS_TRY(read_string(f.target_file, in));
+  } else if (t.subtype == 1 || t.subtype == 4) {
+    auto size = in.uint(kFileSizeBytes);
+    if (!size) return size.error();
+    f.max_size = size.value();
+  }
+  return Message{f};
+}
+
 Result<Message> read_alternative(const MessageType& t, const Config& c, Reader& in) {
   switch (t.shape) {
     case Shape::NoData:
@@ -171,6 +205,8 @@ Result<Message> read_alternative(const MessageType& t, const Config& c, Reader& 
       return read_time_report(c, in);
     case Shape::Activities:
       return read_activities(t, c, in);
+    case Shape::FileRequest:
+      return read_file_request(t, in);
   }
   return fail(Reason::BadField, "unknown shape");
 }

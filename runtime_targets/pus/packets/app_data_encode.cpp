@@ -60,6 +60,24 @@ Result<Done> write_activities(const MessageType& t, const Activities& a, const C
   return Done{};
 }
 
+Result<Done> write_string(const FixedBytes<kMaxFileString>& text, Writer& out) {
+  SMCBIP_PUS_TRY(out.uint(text.size(), kFileStringLengthBytes));
+  return out.bytes(text.span());
+}
+
+/// ECSS-E-ST-70-41C 8.23.2: the fields of each ST23 subtype, in order.
+Result<Done> write_file_request(const MessageType& t, const FileRequest& f, Writer& out) {
+  if (t.subtype == 14) SMCBIP_PUS_TRY(out.uint(f.operation_id, kFileOperationIdBytes));
+  SMCBIP_PUS_TRY(write_string(f.repository, out));
+  SMCBIP_PUS_TRY(write_string(f.file, out));
+  if (t.subtype == 14) {
+    SMCBIP_PUS_TRY(write_string(f.target_repository, out));
+    return write_string(f.target_file, out);
+  }
+  if (t.subtype == 1 || t.subtype == 4) return out.uint(f.max_size, kFileSizeBytes);
+  return Done{};
+}
+
 Result<Done> write_alternative(const MessageType& t, const Message& m, const Config& c,
                                Writer& out) {
   switch (t.shape) {
@@ -95,6 +113,8 @@ Result<Done> write_alternative(const MessageType& t, const Message& m, const Con
       return encode_cuc(std::get<TimeReport>(m).time, c, out);
     case Shape::Activities:
       return write_activities(t, std::get<Activities>(m), c, out);
+    case Shape::FileRequest:
+      return write_file_request(t, std::get<FileRequest>(m), out);
   }
   return fail(Reason::BadField, "unknown shape");
 }

@@ -40,6 +40,11 @@ constexpr std::array kTypes{
     MessageType{20, 1, kTc, Shape::IdList, "report parameter values"},
     MessageType{20, 2, kTm, Shape::ParameterValues, "parameter value report"},
     MessageType{20, 3, kTc, Shape::ParameterValues, "set parameter values"},
+    MessageType{23, 1, kTc, Shape::FileRequest, "create a file"},
+    MessageType{23, 2, kTc, Shape::FileRequest, "delete a file"},
+    MessageType{23, 3, kTc, Shape::FileRequest, "report the attributes of a file"},
+    MessageType{23, 4, kTm, Shape::FileRequest, "file attribute report"},
+    MessageType{23, 14, kTc, Shape::FileRequest, "copy a file"},
 };
 
 }  // namespace

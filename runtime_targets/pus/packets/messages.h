@@ -21,6 +21,14 @@ inline constexpr std::size_t kMaxFailureData = 32;  ///< octets of ST01 failure 
 inline constexpr std::size_t kMaxAuxData = 64;      ///< octets of ST05 auxiliary data
 inline constexpr std::size_t kMaxRequests = 4;      ///< embedded TCs in [11,4] and [19,1]
 inline constexpr std::size_t kMaxEmbeddedTc = 256;  ///< octets of one embedded TC
+inline constexpr std::size_t kMaxFileString = 64;   ///< octets of an ST23 path or file name
+
+/// ST23 fields whose widths the standard leaves to the mission, fixed by this project: a
+/// variable-length character string is a one-octet length then that many octets; the copy
+/// operation ID two octets; the maximum file size four.
+inline constexpr std::size_t kFileStringLengthBytes = 1;
+inline constexpr std::size_t kFileOperationIdBytes = 2;
+inline constexpr std::size_t kFileSizeBytes = 4;
 
 /// [17,1], [17,2]: no application data.
 struct NoData {
@@ -112,9 +120,23 @@ struct Activities {
   friend bool operator==(const Activities&, const Activities&) = default;
 };
 
+/// ST23 file management (ECSS-E-ST-70-41C 8.23): [23,1] create a file (repository path, file
+/// name, maximum size), [23,2] delete a file and [23,3] report its attributes (repository
+/// path, file name), [23,4] file attribute report (repository path, file name, maximum size),
+/// [23,14] copy a file (operation ID, source repository path and file name, target repository
+/// path and file name). The optional lock status of [23,1] and [23,4] is left out.
+struct FileRequest {
+  std::uint64_t operation_id = 0;  ///< [23,14]
+  FixedBytes<kMaxFileString> repository, file;
+  FixedBytes<kMaxFileString> target_repository, target_file;  ///< [23,14]
+  std::uint64_t max_size = 0;                                 ///< [23,1], [23,4]
+  friend bool operator==(const FileRequest&, const FileRequest&) = default;
+};
+
 /// The application data of any supported message type.
-using Message = std::variant<NoData, Verification, IdList, HousekeepingReport, EventReport,
-                             FunctionCall, ParameterValues, TimeReportRate, TimeReport, Activities>;
+using Message =
+    std::variant<NoData, Verification, IdList, HousekeepingReport, EventReport, FunctionCall,
+                 ParameterValues, TimeReportRate, TimeReport, Activities, FileRequest>;
 
 /// Which alternative of Message a message type carries (the variant's index).
 enum class Shape : std::uint8_t {
@@ -128,6 +150,7 @@ enum class Shape : std::uint8_t {
   TimeReportRate,
   TimeReport,
   Activities,
+  FileRequest,
 };
 
 /// A supported message type: [service, subtype], its direction and the shape of its data.

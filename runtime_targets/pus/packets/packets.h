@@ -11,3 +11,4 @@
 #include "packet.h"       // IWYU pragma: export
 #include "pus_headers.h"  // IWYU pragma: export
 #include "result.h"       // IWYU pragma: export
+#include "time_fields.h"  // IWYU pragma: export

@@ -17,7 +17,8 @@ Application::Application(const mission::Mission& mission, const Config& config, 
       housekeeping_(mission, parameters_, tm_, start),
       time_(mission.time_report_period_ms, tm_, start),
       monitoring_(mission, parameters_, start),
-      event_action_(mission) {
+      event_action_(mission),
+      files_(mission) {
   // Room for every definition's transition in one step, so tick() does not allocate.
   transitions_.reserve(mission.monitoring.size());
 }
@@ -52,6 +53,8 @@ Outcome Application::dispatch(const Telecommand& tc, Millis now) {
       return subtype == 1
                  ? parameters_.report(std::get<IdList>(tc.data), tc.header.source_id, tm_, now)
                  : parameters_.set_all(std::get<ParameterValues>(tc.data));
+    case Route::Files:
+      return files_.execute(tc, tm_, now);
   }
   return Failure{FailureCode::NotRouted, tc.header.service};
 }
@@ -78,6 +81,8 @@ Outcome Application::check(const Telecommand& tc, Millis now) const {
     case Route::Parameters:
       return tc.header.subtype == 1 ? parameters_.check(std::get<IdList>(tc.data))
                                     : parameters_.check(std::get<ParameterValues>(tc.data));
+    case Route::Files:
+      return files_.check(tc);
   }
   return Failure{FailureCode::NotRouted, tc.header.service};
 }

@@ -9,6 +9,7 @@
 
 #include "event_action.h"
 #include "events.h"
+#include "file_management.h"
 #include "functions.h"
 #include "housekeeping.h"
 #include "mission/mission.h"
@@ -81,6 +82,7 @@ class Application {
   Schedule schedule_;
   Monitoring monitoring_;
   EventAction event_action_;
+  FileManagement files_;
   std::vector<Transition> transitions_;
 };
 

@@ -14,6 +14,7 @@ std::optional<Route> TcReception::route(const Telecommand& tc) {
     case 17:
     case 19:
     case 20:
+    case 23:
       return static_cast<Route>(tc.header.service);
     default:
       return std::nullopt;

@@ -23,6 +23,7 @@ enum class Route : std::uint8_t {
   Test = 17,
   EventAction = 19,
   Parameters = 20,
+  Files = 23,
 };
 
 /// Receives the TCs of one application process.

@@ -19,6 +19,7 @@ enum class FailureCode : std::uint16_t {
   TableFull = 6,          ///< no room left in a table (schedule, event-action); data: the ID
   AlreadyDefined = 7,     ///< an event-action definition for this event exists; data: the ID
   ReleaseTimePassed = 8,  ///< a schedule release time not in the future; data: the time (s)
+  FileRefused = 9,        ///< the host file system refused an ST23 request; data: its errno
 };
 
 /// A failed request: the failure code and the datum its failure data carries (four octets,
