@@ -8,6 +8,7 @@
 #include "engines/semantics/layout.h"
 #include "fdir/errors.h"
 #include "fdir/invariants/component_invariants.h"
+#include "fdir/invariants/linear_invariants.h"
 #include "fdir/invariants/trap_invariants.h"
 #include "fdir/net/petri_net.h"
 #include "fdir/prove/deadlock_predicate.h"
@@ -47,7 +48,8 @@ struct Prover::State {
   /// CI and the traps found so far, as a list: a conjunction built clause by clause nests
   /// as deep as it is long, which Z3 is slow to free.
   z3::expr_vector invariant;
-  std::optional<z3::expr> deadlock;  // DIS, once a query reads it
+  std::optional<z3::expr> deadlock;     // DIS, once a query reads it
+  std::optional<StateEquation> linear;  // with Method::Linear and Method::Both
   std::size_t traps = 0;
   bool untimed = true;
 };
@@ -60,6 +62,10 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
     for (const z3::expr& d : state_->variables.data(a)) {
       state_->invariant.push_back(int64_bounds(d));
     }
+  }
+  if (options.method != Method::Traps) {
+    state_->linear.emplace(state_->variables);
+    for (const z3::expr& clause : state_->linear->clauses()) state_->invariant.push_back(clause);
   }
   engines::Layout layout;
   engines::build_layout(system, layout);
@@ -87,8 +93,10 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
       marking[p] = model.eval(s.variables.place(p), true).is_true() ? 1 : 0;
       if (marking[p]) candidate.push_back(s.net.places[p]);
     }
+    // With the state equation alone, a candidate is final.
     const std::vector<std::vector<Index>> traps =
-        excluding_traps(s.net, marking, kTrapsPerCandidate);
+        options_.method == Method::Linear ? std::vector<std::vector<Index>>{}
+                                          : excluding_traps(s.net, marking, kTrapsPerCandidate);
     if (traps.empty() || added >= options_.max_traps) {
       for (Index a = 0; a < system_.atoms.size(); ++a) {
         for (const z3::expr& d : s.variables.data(a)) {
@@ -164,6 +172,7 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   QueryOutcome out;
   out.net_transitions = s.net.transitions.size();
   out.component_invariants = s.components.data_invariants();
+  out.linear = s.linear.has_value();
   auto start = Clock::now();
   if (!s.deadlock) s.deadlock = deadlock_predicate(s.variables, s.encoder);
   const z3::expr phi = encode_formula(*query.formula, s.variables, constants, *s.deadlock);

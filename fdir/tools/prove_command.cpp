@@ -36,8 +36,8 @@ void print_trace(std::ostream& out, const std::vector<fdir::TraceState>& trace) 
 
 void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutcome& o) {
   out << monitors::to_string(q) << "  " << verdict_text(o.verdict) << " (" << o.method << "; traps "
-      << o.traps << ", component invariants " << o.component_invariants << ", net transitions "
-      << o.net_transitions << ")\n";
+      << o.traps << ", linear " << (o.linear ? "yes" : "no") << ", component invariants "
+      << o.component_invariants << ", net transitions " << o.net_transitions << ")\n";
   if (!o.trace.empty()) {
     out << "  " << (q.kind == monitors::Query::Kind::Invariant ? "counterexample" : "witness")
         << " (" << o.trace.size() - 1 << (o.trace.size() == 2 ? " step" : " steps") << "):\n";
@@ -69,6 +69,7 @@ nlohmann::json outcome_json(const monitors::Query& q, const QueryOutcome& o) {
           {"method", o.method},
           {"invariants",
            {{"traps", o.traps},
+            {"linear", o.linear},
             {"component_invariants", o.component_invariants},
             {"net_transitions", o.net_transitions}}},
           {"candidate", o.candidate},
@@ -117,6 +118,17 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
                   "rounds of post-condition iteration per atom type (any number is sound)")
       ->check(cli::integer_in(0, 100))
       ->option_text("N (default: " + std::to_string(o.component_iterations) + ")");
+  command
+      .add_option_function<std::string>(
+          "--method",
+          [&o](const std::string& name) {
+            o.method = name == "traps"    ? fdir::Method::Traps
+                       : name == "linear" ? fdir::Method::Linear
+                                          : fdir::Method::Both;
+          },
+          "interaction invariants: the traps of the net, its state equation, or both")
+      ->check(CLI::IsMember({"traps", "linear", "both"}).description(""))
+      ->option_text(cli::choices_text({"traps", "linear", "both"}) + " (default: both)");
   cli::add_json_flag(command, prove.json);
   command.footer(
       "Priorities are dropped and clocks ignored by the invariants, which over-approximates the "
