@@ -65,7 +65,9 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
   }
   if (options.method != Method::Traps) {
     state_->linear.emplace(state_->variables);
-    for (const z3::expr& clause : state_->linear->clauses()) state_->invariant.push_back(clause);
+    for (const z3::expr& clause : state_->linear->invariant_clauses()) {
+      state_->invariant.push_back(clause);
+    }
   }
   engines::Layout layout;
   engines::build_layout(system, layout);
@@ -79,6 +81,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
   z3::solver solver(s.context);
   for (const z3::expr& clause : s.invariant) solver.add(clause);
   solver.add(bad);
+  bool equation = false;  // the state equation is in the solver
   for (std::size_t added = 0;;) {
     const z3::check_result r = solver.check();
     if (r == z3::unsat) return std::nullopt;
@@ -92,6 +95,13 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
     for (Index p = 0; p < marking.size(); ++p) {
       marking[p] = model.eval(s.variables.place(p), true).is_true() ? 1 : 0;
       if (marking[p]) candidate.push_back(s.net.places[p]);
+    }
+    // The place invariants did not exclude the candidate; the state equation, slower to
+    // refute, joins only when it excludes the candidate.
+    if (s.linear && !equation && !s.linear->admits(marking)) {
+      for (const z3::expr& clause : s.linear->equation()) solver.add(clause);
+      equation = true;
+      continue;
     }
     // With the state equation alone, a candidate is final.
     const std::vector<std::vector<Index>> traps =
