@@ -24,8 +24,16 @@ using Clock = std::chrono::steady_clock;
 /// Traps added against one candidate (each excludes it; several make fewer rounds).
 constexpr std::size_t kTrapsPerCandidate = 4096;
 
-/// States the breadth-first search keeps before the search heads for the candidate instead.
+/// States the breadth-first search keeps before the search heads for the candidate instead,
+/// at most; fewer on large models, where expanding a state costs as many engine steps as there
+/// are interactions: the breadth-first budget is then kBreadthWork interactions.
 constexpr std::uint64_t kBreadthStates = 20'000;
+constexpr std::uint64_t kBreadthWork = 200'000;
+
+std::uint64_t breadth_states(const PetriNet& net) {
+  const std::uint64_t interactions = std::max<std::uint64_t>(1, net.interactions.size());
+  return std::clamp<std::uint64_t>(kBreadthWork / interactions, 10, kBreadthStates);
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -137,9 +145,10 @@ void Prover::search(const monitors::Query& query, const monitors::Bindings& cons
                                  const engines::StringPool& strings, bool deadlocked) {
     return holds_in(phi, runtime, strings, constants, deadlocked) != all;
   };
-  SearchLimits limits{options_.explore_depth,
-                      std::min<std::uint64_t>(options_.max_explored_states, kBreadthStates),
-                      {}};
+  SearchLimits limits{
+      options_.explore_depth,
+      std::min<std::uint64_t>(options_.max_explored_states, breadth_states(state_->net)),
+      {}};
   SearchResult found = search_state(system_, target, limits);
   out.explored_states = found.states;
   if (!found.found && !found.complete && !candidate.marking.empty()) {
