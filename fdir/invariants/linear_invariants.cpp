@@ -1,4 +1,4 @@
-// The state equation of the net as linear integer arithmetic for Z3.
+// The state equation of the net and a basis of its place invariants, for Z3.
 #include "fdir/invariants/linear_invariants.h"
 
 #include <algorithm>

@@ -109,6 +109,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
     if (s.linear && !equation && !s.linear->admits(marking)) {
       for (const z3::expr& clause : s.linear->equation()) solver.add(clause);
       equation = true;
+      out.state_equation = true;
       continue;
     }
     // With the state equation alone, a candidate is final.
@@ -192,6 +193,7 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   out.net_transitions = s.net.transitions.size();
   out.component_invariants = s.components.data_invariants();
   out.linear = s.linear.has_value();
+  out.place_invariants = s.linear ? s.linear->place_invariants().size() : 0;
   auto start = Clock::now();
   if (!s.deadlock) s.deadlock = deadlock_predicate(s.variables, s.encoder);
   const z3::expr phi = encode_formula(*query.formula, s.variables, constants, *s.deadlock);

@@ -47,7 +47,9 @@ struct QueryOutcome {
   /// (every reachable state was examined), `none` (open).
   std::string method = "none";
   std::size_t traps = 0;  // trap invariants known when the query was decided (shared by queries)
-  bool linear = false;    // the state equation was part of the invariants
+  bool linear = false;    // the linear invariants were part of the invariants
+  std::size_t place_invariants = 0;      // with linear: the place invariants stated
+  bool state_equation = false;           // with linear: the state equation joined this query
   std::size_t component_invariants = 0;  // atoms with a data invariant
   std::size_t net_transitions = 0;
   /// The last candidate state Z3 gave (marked places and data), when the invariants did not

@@ -70,6 +70,8 @@ nlohmann::json outcome_json(const monitors::Query& q, const QueryOutcome& o) {
           {"invariants",
            {{"traps", o.traps},
             {"linear", o.linear},
+            {"place_invariants", o.place_invariants},
+            {"state_equation", o.state_equation},
             {"component_invariants", o.component_invariants},
             {"net_transitions", o.net_transitions}}},
           {"candidate", o.candidate},

@@ -129,6 +129,7 @@ TEST(StateEquation, FiringCountsAreNotNegative) {
   const QueryOutcome o = prover.prove(parsed.file.queries.front(), {});
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.method, "invariants");
+  EXPECT_TRUE(o.state_equation);
 }
 
 TEST(StateEquation, ExcludesNeighboursEatingTogether) {
@@ -201,9 +202,9 @@ ProveOptions with(Method method, std::uint64_t explore_depth = 1000) {
 }
 
 /// Compares each method's verdict on `query` with the exhaustive one. A property that holds
-/// must be proved by the state equation (method `invariants`, no search allowed) and not by
+/// must be proved by the linear invariants (method `invariants`, no search allowed) and not by
 /// traps alone (open without search, decided by the complete search otherwise).
-void check_needs_state_equation(const bipc::ir::System& system, const Query& query, bool holds) {
+void check_needs_linear_invariants(const bipc::ir::System& system, const Query& query, bool holds) {
   SCOPED_TRACE(query.text);
   ASSERT_EQ(!tests::some_reachable(system, query.violates), holds);
   const Verdict expected = holds ? Verdict::Holds : Verdict::Fails;
@@ -224,13 +225,13 @@ void check_needs_state_equation(const bipc::ir::System& system, const Query& que
 TEST(LinearBenchmarks, NeighbouringPhilosophersNeverEatTogether) {
   const auto system = load(kTogether.file, kTogether.root);
   ASSERT_TRUE(system);
-  check_needs_state_equation(*system,
-                             {"A[] !(ROOT.p0.eating && ROOT.p1.eating)",
-                              [&](const engines::RunState& s, const engines::Layout& l, bool) {
-                                return marks(*system, s, l, "p0", "eating") &&
-                                       marks(*system, s, l, "p1", "eating");
-                              }},
-                             true);
+  check_needs_linear_invariants(*system,
+                                {"A[] !(ROOT.p0.eating && ROOT.p1.eating)",
+                                 [&](const engines::RunState& s, const engines::Layout& l, bool) {
+                                   return marks(*system, s, l, "p0", "eating") &&
+                                          marks(*system, s, l, "p1", "eating");
+                                 }},
+                                true);
 }
 
 /// Two customers of pump 0 pumping at once.
@@ -247,15 +248,15 @@ const Query kDeadlock{"A[] !deadlock", [](const engines::RunState&, const engine
 TEST(LinearBenchmarks, TheGasStationIsDeadlockFreeWithOneCustomerPerPump) {
   const auto system = load(kGasStation.file, kGasStation.root);
   ASSERT_TRUE(system);
-  check_needs_state_equation(*system, kDeadlock, true);
-  check_needs_state_equation(*system, one_customer_per_pump(*system), true);
+  check_needs_linear_invariants(*system, kDeadlock, true);
+  check_needs_linear_invariants(*system, one_customer_per_pump(*system), true);
 }
 
 TEST(LinearBenchmarks, APrepaymentThatDoesNotReserveThePumpDeadlocksTheGasStation) {
   const auto system = load(kGasStationBug.file, kGasStationBug.root);
   ASSERT_TRUE(system);
-  check_needs_state_equation(*system, kDeadlock, false);
-  check_needs_state_equation(*system, one_customer_per_pump(*system), true);
+  check_needs_linear_invariants(*system, kDeadlock, false);
+  check_needs_linear_invariants(*system, one_customer_per_pump(*system), true);
 }
 
 /// Two ATMs in the bank at once.
@@ -278,8 +279,8 @@ Query one_user_per_atm(const bipc::ir::System& system) {
 TEST(LinearBenchmarks, AtMostOneAtmIsInTheBankAndOneUserAtAnAtm) {
   const auto system = load(kAtm.file, kAtm.root);
   ASSERT_TRUE(system);
-  check_needs_state_equation(*system, one_in_the_bank(*system), true);
-  check_needs_state_equation(*system, one_user_per_atm(*system), true);
+  check_needs_linear_invariants(*system, one_in_the_bank(*system), true);
+  check_needs_linear_invariants(*system, one_user_per_atm(*system), true);
   // Deadlock-freedom: traps suffice here, the state equation too.
   ASSERT_FALSE(tests::some_reachable(*system, kDeadlock.violates));
   for (Method m : {Method::Traps, Method::Linear, Method::Both}) {
@@ -292,8 +293,8 @@ TEST(LinearBenchmarks, AtMostOneAtmIsInTheBankAndOneUserAtAnAtm) {
 TEST(LinearBenchmarks, ABankTakingTwoRequestsLetsTwoAtmsIn) {
   const auto system = load(kAtmBug.file, kAtmBug.root);
   ASSERT_TRUE(system);
-  check_needs_state_equation(*system, one_in_the_bank(*system), false);
-  check_needs_state_equation(*system, one_user_per_atm(*system), true);
+  check_needs_linear_invariants(*system, one_in_the_bank(*system), false);
+  check_needs_linear_invariants(*system, one_user_per_atm(*system), true);
 }
 
 }  // namespace
