@@ -112,7 +112,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
       out.state_equation = true;
       continue;
     }
-    // With the state equation alone, a candidate is final.
+    // With the linear invariants alone (Method::Linear), a candidate is final.
     const std::vector<std::vector<Index>> traps =
         options_.method == Method::Linear ? std::vector<std::vector<Index>>{}
                                           : excluding_traps(s.net, marking, kTrapsPerCandidate);

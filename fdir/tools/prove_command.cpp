@@ -128,7 +128,8 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
                        : name == "linear" ? fdir::Method::Linear
                                           : fdir::Method::Both;
           },
-          "interaction invariants: the traps of the net, its state equation, or both")
+          "interaction invariants: the traps of the net, its linear invariants (place "
+          "invariants, state equation), or both")
       ->check(CLI::IsMember({"traps", "linear", "both"}).description(""))
       ->option_text(cli::choices_text({"traps", "linear", "both"}) + " (default: both)");
   cli::add_json_flag(command, prove.json);
