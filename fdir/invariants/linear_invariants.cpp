@@ -52,6 +52,10 @@ std::vector<Index> place_atoms(const PetriNet& net) {
   return atom;
 }
 
+/// Row entries the elimination (and the back substitution) may update before giving up: the
+/// nets of communicating state machines need a few per transition, a dense net far more.
+constexpr std::size_t kEliminationWork = 20'000'000;
+
 using Rational = boost::multiprecision::cpp_rational;
 using Row = std::map<Index, Rational>;  // place -> coefficient
 
@@ -72,15 +76,18 @@ class Elimination {
       for (const auto& entry : rows_[r]) occ_[entry.first].insert(r);
     }
     pivot_.assign(places, 0);
-    for (Index r = 0; r < rows_.size(); ++r) eliminate(r);
+    for (Index r = 0; r < rows_.size() && !gave_up(); ++r) eliminate(r);
   }
 
   bool is_pivot(Index place) const { return pivot_[place] != 0; }
+  /// The fill-in exceeded kEliminationWork: no basis (the place invariants are optional).
+  bool gave_up() const { return work_ > kEliminationWork; }
 
   /// Per pivot place, its value in terms of the free places (the others are 0).
   std::vector<Row> back_substitute() const {
     std::vector<Row> expr(pivot_.size());
-    for (std::size_t k = pivots_.size(); k-- > 0;) {
+    std::size_t work = 0;
+    for (std::size_t k = pivots_.size(); k-- > 0 && work <= kEliminationWork;) {
       const auto [q, r] = pivots_[k];
       const Rational cq = rows_[r].at(q);
       Row e;
@@ -93,8 +100,10 @@ class Elimination {
           for (const auto& [w, d] : expr[v]) add_to(e, w, f * d);
         }
       }
+      work += e.size();
       expr[q] = std::move(e);
     }
+    if (work > kEliminationWork) return {};
     return expr;
   }
 
@@ -117,6 +126,7 @@ class Elimination {
     pivots_.emplace_back(q, r);
     const Rational cq = row.at(q);
     const std::vector<Index> others(occ_[q].begin(), occ_[q].end());
+    work_ += others.size() * row.size();
     for (Index r2 : others) {
       Row& target = rows_[r2];
       const Rational factor = target.at(q) / cq;
@@ -137,6 +147,7 @@ class Elimination {
   std::vector<std::set<Index>> occ_;  // per place, the rows not yet pivoted containing it
   std::vector<std::uint8_t> pivot_;
   std::vector<std::pair<Index, Index>> pivots_;  // (place, row) in pivot order
+  std::size_t work_ = 0;                         // row entries updated
 };
 
 /// `y` scaled to coprime integers; nullopt when a weight does not fit comfortably in 64 bits.
@@ -197,12 +208,14 @@ std::vector<PlaceInvariant> place_invariants(const bipc::ir::System& system, con
     if (!row.empty()) rows.push_back(std::move(row));
   }
   const Elimination elimination(places, std::move(rows));
+  if (elimination.gave_up()) return {};
   // One basis vector per free place f: y_f = 1, the other free places 0.
   std::vector<Row> basis(places);
   for (Index p = 0; p < places; ++p) {
     if (kept[p] && !elimination.is_pivot(p)) basis[p].emplace(p, 1);
   }
   const std::vector<Row> expr = elimination.back_substitute();
+  if (expr.empty()) return {};
   for (const auto& pivot : elimination.pivots()) {
     for (const auto& [f, a] : expr[pivot.first]) basis[f].emplace(pivot.first, a);
   }
