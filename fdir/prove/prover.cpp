@@ -8,6 +8,7 @@
 #include "engines/semantics/layout.h"
 #include "fdir/errors.h"
 #include "fdir/invariants/component_invariants.h"
+#include "fdir/invariants/linear_invariants.h"
 #include "fdir/invariants/trap_invariants.h"
 #include "fdir/net/petri_net.h"
 #include "fdir/prove/deadlock_predicate.h"
@@ -23,8 +24,16 @@ using Clock = std::chrono::steady_clock;
 /// Traps added against one candidate (each excludes it; several make fewer rounds).
 constexpr std::size_t kTrapsPerCandidate = 4096;
 
-/// States the breadth-first search keeps before the search heads for the candidate instead.
+/// States the breadth-first search keeps before the search heads for the candidate instead,
+/// at most; fewer on large models, where expanding a state costs as many engine steps as there
+/// are interactions: the breadth-first budget is then kBreadthWork interactions.
 constexpr std::uint64_t kBreadthStates = 20'000;
+constexpr std::uint64_t kBreadthWork = 200'000;
+
+std::uint64_t breadth_states(const PetriNet& net) {
+  const std::uint64_t interactions = std::max<std::uint64_t>(1, net.interactions.size());
+  return std::clamp<std::uint64_t>(kBreadthWork / interactions, 10, kBreadthStates);
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -47,7 +56,8 @@ struct Prover::State {
   /// CI and the traps found so far, as a list: a conjunction built clause by clause nests
   /// as deep as it is long, which Z3 is slow to free.
   z3::expr_vector invariant;
-  std::optional<z3::expr> deadlock;  // DIS, once a query reads it
+  std::optional<z3::expr> deadlock;     // DIS, once a query reads it
+  std::optional<StateEquation> linear;  // with Method::Linear and Method::Both
   std::size_t traps = 0;
   bool untimed = true;
   std::vector<AssumptionSite> assumptions;  // in the invariant
@@ -60,6 +70,12 @@ Prover::Prover(const bipc::ir::System& system, const ProveOptions& options)
     state_->invariant.push_back(state_->components.of_atom(a));
     for (const z3::expr& d : state_->variables.data(a)) {
       state_->invariant.push_back(int64_bounds(d));
+    }
+  }
+  if (options.method != Method::Traps) {
+    state_->linear.emplace(state_->variables);
+    for (const z3::expr& clause : state_->linear->invariant_clauses()) {
+      state_->invariant.push_back(clause);
     }
   }
   engines::Layout layout;
@@ -87,6 +103,7 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
   z3::solver solver(s.context);
   for (const z3::expr& clause : s.invariant) solver.add(clause);
   solver.add(bad);
+  bool equation = false;  // the state equation is in the solver
   for (std::size_t added = 0;;) {
     const z3::check_result r = solver.check();
     if (r == z3::unsat) return std::nullopt;
@@ -101,8 +118,18 @@ std::optional<Prover::Candidate> Prover::refute(const z3::expr& bad, QueryOutcom
       marking[p] = model.eval(s.variables.place(p), true).is_true() ? 1 : 0;
       if (marking[p]) candidate.push_back(s.net.places[p]);
     }
+    // The place invariants did not exclude the candidate; the state equation, slower to
+    // refute, joins only when it excludes the candidate.
+    if (s.linear && !equation && !s.linear->admits(marking)) {
+      for (const z3::expr& clause : s.linear->equation()) solver.add(clause);
+      equation = true;
+      out.state_equation = true;
+      continue;
+    }
+    // With the linear invariants alone (Method::Linear), a candidate is final.
     const std::vector<std::vector<Index>> traps =
-        excluding_traps(s.net, marking, kTrapsPerCandidate);
+        options_.method == Method::Linear ? std::vector<std::vector<Index>>{}
+                                          : excluding_traps(s.net, marking, kTrapsPerCandidate);
     if (traps.empty() || added >= options_.max_traps) {
       for (Index a = 0; a < system_.atoms.size(); ++a) {
         for (const z3::expr& d : s.variables.data(a)) {
@@ -133,9 +160,10 @@ void Prover::search(const monitors::Query& query, const monitors::Bindings& cons
                                  const engines::StringPool& strings, bool deadlocked) {
     return holds_in(phi, runtime, strings, constants, deadlocked) != all;
   };
-  SearchLimits limits{options_.explore_depth,
-                      std::min<std::uint64_t>(options_.max_explored_states, kBreadthStates),
-                      {}};
+  SearchLimits limits{
+      options_.explore_depth,
+      std::min<std::uint64_t>(options_.max_explored_states, breadth_states(state_->net)),
+      {}};
   SearchResult found = search_state(system_, target, limits);
   out.explored_states = found.states;
   if (!found.found && !found.complete && !candidate.marking.empty()) {
@@ -178,6 +206,8 @@ QueryOutcome Prover::prove(const monitors::Query& query, const monitors::Binding
   QueryOutcome out;
   out.net_transitions = s.net.transitions.size();
   out.component_invariants = s.components.data_invariants();
+  out.linear = s.linear.has_value();
+  out.place_invariants = s.linear ? s.linear->place_invariants().size() : 0;
   auto start = Clock::now();
   if (!s.deadlock) s.deadlock = deadlock_predicate(s.variables, s.encoder);
   const z3::expr phi = encode_formula(*query.formula, s.variables, constants, *s.deadlock);

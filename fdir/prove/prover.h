@@ -21,8 +21,13 @@
 
 namespace smcbip::fdir {
 
-/// What the prover may spend.
+/// Which interaction invariants join the component invariants: the traps of the net, its
+/// state equation (linear invariants), or both.
+enum class Method : std::uint8_t { Traps, Linear, Both };
+
+/// What the prover may spend, and with which invariants.
 struct ProveOptions {
+  Method method = Method::Both;
   /// Rounds of the post-condition iteration per atom type (each round's result is sound).
   unsigned component_iterations = 3;
   /// The search for a violating state stops at this many steps from the initial state...
@@ -43,6 +48,9 @@ struct QueryOutcome {
   /// (every reachable state was examined), `none` (open).
   std::string method = "none";
   std::size_t traps = 0;  // trap invariants known when the query was decided (shared by queries)
+  bool linear = false;    // the linear invariants were part of the invariants
+  std::size_t place_invariants = 0;      // with linear: the place invariants stated
+  bool state_equation = false;           // with linear: the state equation joined this query
   std::size_t component_invariants = 0;  // atoms with a data invariant
   std::size_t net_transitions = 0;
   /// The last candidate state Z3 gave (marked places and data), when the invariants did not

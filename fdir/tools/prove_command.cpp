@@ -48,8 +48,9 @@ std::string assumptions_text(const QueryOutcome& o) {
 
 void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutcome& o) {
   out << monitors::to_string(q) << "  " << verdict_text(o.verdict) << " (" << o.method
-      << assumptions_text(o) << "; traps " << o.traps << ", component invariants "
-      << o.component_invariants << ", net transitions " << o.net_transitions << ")\n";
+      << assumptions_text(o) << "; traps " << o.traps << ", linear " << (o.linear ? "yes" : "no")
+      << ", component invariants " << o.component_invariants << ", net transitions "
+      << o.net_transitions << ")\n";
   if (!o.trace.empty()) {
     out << "  " << (q.kind == monitors::Query::Kind::Invariant ? "counterexample" : "witness")
         << " (" << o.trace.size() - 1 << (o.trace.size() == 2 ? " step" : " steps") << "):\n";
@@ -93,6 +94,9 @@ nlohmann::json outcome_json(const monitors::Query& q, const QueryOutcome& o) {
           {"method", o.method},
           {"invariants",
            {{"traps", o.traps},
+            {"linear", o.linear},
+            {"place_invariants", o.place_invariants},
+            {"state_equation", o.state_equation},
             {"component_invariants", o.component_invariants},
             {"net_transitions", o.net_transitions}}},
           {"assumptions", assumptions_json(o)},
@@ -165,6 +169,18 @@ void register_prove_options(CLI::App& command, ProveCommand& prove) {
                   "rounds of post-condition iteration per atom type (any number is sound)")
       ->check(cli::integer_in(0, 100))
       ->option_text("N (default: " + std::to_string(o.component_iterations) + ")");
+  command
+      .add_option_function<std::string>(
+          "--method",
+          [&o](const std::string& name) {
+            o.method = name == "traps"    ? fdir::Method::Traps
+                       : name == "linear" ? fdir::Method::Linear
+                                          : fdir::Method::Both;
+          },
+          "interaction invariants: the traps of the net, its linear invariants (place "
+          "invariants, state equation), or both")
+      ->check(CLI::IsMember({"traps", "linear", "both"}).description(""))
+      ->option_text(cli::choices_text({"traps", "linear", "both"}) + " (default: both)");
   command
       .add_option("--assume", prove.assumptions,
                   "an SMT-LIB2 file of assertions over the model's places and data, used once "

@@ -59,9 +59,12 @@ TEST(Prover, PhilosophersTakingForksTogetherAreProvedDeadlockFreeByTraps) {
   const auto system = load(kTogether);
   ASSERT_TRUE(system);
   ASSERT_EQ(tests::reachable_deadlocks(*system), 0u);
-  const QueryOutcome o = prove_text(*system, "A[] !deadlock");
+  ProveOptions traps;
+  traps.method = Method::Traps;
+  const QueryOutcome o = prove_text(*system, "A[] !deadlock", traps);
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.method, "invariants");
+  EXPECT_FALSE(o.linear);
   EXPECT_GT(o.traps, 0u);  // the atoms' invariants alone do not exclude the deadlocks of DIS
 }
 
@@ -78,13 +81,20 @@ TEST(Prover, AnAsymmetricPhilosopherFlipsTheVerdictOfTakingForksOneAtATime) {
   const auto system = load(kAsymmetric);
   ASSERT_TRUE(system);
   ASSERT_EQ(tests::reachable_deadlocks(*system), 0u);
-  // Traps do not exclude every candidate here (the state equation would); the candidates
-  // left are unreachable, which the complete search shows.
-  const QueryOutcome o = prove_text(*system, "A[] !deadlock");
+  // Traps do not exclude every candidate here; the candidates left are unreachable, which the
+  // complete search shows. The state equation excludes them.
+  ProveOptions traps;
+  traps.method = Method::Traps;
+  EXPECT_EQ(prove_text(*system, "A[] !deadlock", traps).verdict, Verdict::Holds);
+  traps.explore_depth = 2;
+  EXPECT_EQ(prove_text(*system, "A[] !deadlock", traps).verdict, Verdict::Open);
+  ProveOptions linear;
+  linear.method = Method::Linear;
+  linear.explore_depth = 0;
+  const QueryOutcome o = prove_text(*system, "A[] !deadlock", linear);
   EXPECT_EQ(o.verdict, Verdict::Holds);
-  ProveOptions shallow;
-  shallow.explore_depth = 2;
-  EXPECT_EQ(prove_text(*system, "A[] !deadlock", shallow).verdict, Verdict::Open);
+  EXPECT_EQ(o.method, "invariants");
+  EXPECT_EQ(o.traps, 0u);
 }
 
 /// Whether some reachable state has `c.x` above `bound`.
