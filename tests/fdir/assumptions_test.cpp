@@ -9,9 +9,12 @@
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 #include "tests/fdir/exhaustive.h"
+#include "tests/fdir/prove_support.h"
 
 namespace smcbip::fdir {
 namespace {
+
+using testing::prove_text;
 
 const std::string kSource = SMCBIP_SOURCE_DIR;
 const std::string kBenchmark = kSource + "/models/fdir/benchmarks/producer_consumer.bip";
@@ -19,18 +22,6 @@ const std::string kDoubleCount = kSource + "/tests/fdir/models/producer_consumer
 
 /// The assumption of models/fdir/benchmarks/producer_consumer.smt2.
 const std::string kInductive = "(assert (= ROOT.p.x (+ ROOT.c.y (ite ROOT.p.full 1 0))))\n";
-
-/// The outcome of the single query `text` under the assumptions `sources`.
-QueryOutcome prove_under(const bipc::ir::System& system, const std::string& text,
-                         const std::vector<AssumptionSource>& sources) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(text, "query.mtl");
-  if (parsed.ok()) monitors::resolve_names(parsed.file, system, parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  if (!parsed.ok()) return {};
-  Prover prover(system, ProveOptions{});
-  prover.assume(sources);
-  return prover.prove(parsed.file.queries.front(), monitors::constant_values(parsed.file));
-}
 
 /// The error `sources` are refused with (an empty file name when they are accepted).
 AssumptionError refusal(const bipc::ir::System& system,
@@ -79,7 +70,7 @@ TEST(Assumptions, ProducerConsumerHoldsUnderAnInductiveAssumption) {
   // true in every reachable state.
   ASSERT_FALSE(consumer_ahead_reachable(*system));
   ASSERT_FALSE(inductive_assumption_broken(*system));
-  const QueryOutcome o = prove_under(*system, "A[] c.y <= p.x", {{"pc.smt2", kInductive}});
+  const QueryOutcome o = prove_text(*system, "A[] c.y <= p.x", {}, {{"pc.smt2", kInductive}});
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.method, "invariants");
   ASSERT_EQ(o.assumptions.size(), 1u);
@@ -92,8 +83,8 @@ TEST(Assumptions, WithoutTheAssumptionALargeProducerConsumerIsLeftOpen) {
   // million items the search cannot exhaust the states.
   const auto system = tests::load_model(kBenchmark, "Top(1000000)");
   ASSERT_TRUE(system);
-  EXPECT_EQ(prove_under(*system, "A[] c.y <= p.x", {}).verdict, Verdict::Open);
-  const QueryOutcome o = prove_under(*system, "A[] c.y <= p.x", {{"pc.smt2", kInductive}});
+  EXPECT_EQ(prove_text(*system, "A[] c.y <= p.x").verdict, Verdict::Open);
+  const QueryOutcome o = prove_text(*system, "A[] c.y <= p.x", {}, {{"pc.smt2", kInductive}});
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.method, "invariants");
 }
@@ -122,7 +113,7 @@ TEST(Assumptions, AConjunctionIsInductiveWhereEachHalfIsNot) {
   EXPECT_EQ(refusal(*system, {idle}).file, "idle.smt2");
   EXPECT_EQ(refusal(*system, {full}).file, "full.smt2");
   EXPECT_EQ(refusal(*system, {idle, full}).file, "");
-  const QueryOutcome o = prove_under(*system, "A[] c.y <= p.x", {idle, full});
+  const QueryOutcome o = prove_text(*system, "A[] c.y <= p.x", {}, {idle, full});
   EXPECT_EQ(o.verdict, Verdict::Holds);
   EXPECT_EQ(o.assumptions.size(), 2u);
 }
@@ -141,7 +132,7 @@ TEST(Assumptions, CountingTwiceFlipsTheVerdictAndTheAssumptionIsRefused) {
   // that using it would have been unsound.
   ASSERT_TRUE(consumer_ahead_reachable(*system));
   ASSERT_TRUE(inductive_assumption_broken(*system));
-  const QueryOutcome o = prove_under(*system, "A[] c.y <= p.x", {});
+  const QueryOutcome o = prove_text(*system, "A[] c.y <= p.x");
   EXPECT_EQ(o.verdict, Verdict::Fails);
   EXPECT_EQ(o.method, "trace");
   EXPECT_EQ(o.trace.size(), 3u);  // produce, then transfer: y = 2 > x = 1

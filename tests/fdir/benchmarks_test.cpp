@@ -13,25 +13,13 @@
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 #include "tests/fdir/exhaustive.h"
+#include "tests/fdir/prove_support.h"
 
 namespace smcbip::fdir {
 namespace {
 
-const std::string kSource = SMCBIP_SOURCE_DIR;
-
-std::optional<bipc::ir::System> load(const std::string& file, const std::string& root) {
-  return tests::load_model(kSource + "/" + file, root);
-}
-
-/// The outcome of the single query `text` on `system`.
-QueryOutcome prove_text(const bipc::ir::System& system, const std::string& text) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(text, "query.mtl");
-  if (parsed.ok()) monitors::resolve_names(parsed.file, system, parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  if (!parsed.ok()) return {};
-  Prover prover(system, ProveOptions{});
-  return prover.prove(parsed.file.queries.front(), monitors::constant_values(parsed.file));
-}
+using testing::load;
+using testing::prove_text;
 
 /// Reads places and data of a reachable state by name ("gate", "down"), for the predicates of
 /// the exhaustive explorations.
@@ -70,38 +58,7 @@ class StateReader {
   const bipc::ir::System& system_;
 };
 
-/// The fewest steps from the initial state to a state satisfying `predicate` (breadth first
-/// over every reachable state), or -1 when none does.
-int shortest_distance(const bipc::ir::System& system, const tests::StatePredicate& predicate) {
-  engines::InterpretedModel model(system);
-  engines::Layout layout;
-  EXPECT_EQ(engines::build_layout(system, layout), "");
-  engines::StringPool strings;
-  engines::BoundFunctions functions;
-  engines::bind_functions(system, engines::Externs::with_builtins(), strings, functions);
-  std::ostringstream out;
-  engines::RandomStream random(1, 0);
-  engines::Runtime runtime(model, layout, functions, strings, out, random, {});
-  EXPECT_TRUE(runtime.initialize() && runtime.resume_atoms(0));
-  std::deque<std::pair<engines::RunState, int>> frontier{{runtime.state(), 0}};
-  std::unordered_map<std::string, int> seen{{engines::state_key(runtime.state()), 0}};
-  while (!frontier.empty()) {
-    const auto [state, depth] = frontier.front();
-    frontier.pop_front();
-    EXPECT_TRUE(runtime.restore(state) && runtime.compute_items());
-    const std::vector<engines::Item> items = runtime.items();
-    if (predicate(state, layout, items.empty())) return depth;
-    for (const engines::Item& item : items) {
-      runtime.restore(state);
-      runtime.compute_items();
-      EXPECT_TRUE(runtime.execute(item, state.now));
-      if (seen.emplace(engines::state_key(runtime.state()), depth + 1).second) {
-        frontier.emplace_back(runtime.state(), depth + 1);
-      }
-    }
-  }
-  return -1;
-}
+using tests::shortest_distance;
 
 bool has_place(const TraceState& state, const std::string& place) {
   return std::find(state.places.begin(), state.places.end(), place) != state.places.end();

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <unordered_set>
+#include <utility>
 
 #include "engines/engines.h"
 #include "engines/explore.h"
@@ -20,8 +21,9 @@ namespace smcbip::tests {
 using StatePredicate = std::function<bool(const engines::RunState& state,
                                           const engines::Layout& layout, bool deadlocked)>;
 
-/// Whether some reachable state of `system` satisfies `predicate` (breadth first, every state).
-inline bool some_reachable(const bipc::ir::System& system, const StatePredicate& predicate) {
+/// The fewest steps from the initial state to a state satisfying `predicate` (breadth first
+/// over every reachable state), or -1 when none does.
+inline int shortest_distance(const bipc::ir::System& system, const StatePredicate& predicate) {
   engines::InterpretedModel model(system);
   engines::Layout layout;
   EXPECT_EQ(engines::build_layout(system, layout), "");
@@ -32,24 +34,29 @@ inline bool some_reachable(const bipc::ir::System& system, const StatePredicate&
   engines::RandomStream random(1, 0);
   engines::Runtime runtime(model, layout, functions, strings, out, random, {});
   EXPECT_TRUE(runtime.initialize() && runtime.resume_atoms(0));
-  std::deque<engines::RunState> frontier{runtime.state()};
+  std::deque<std::pair<engines::RunState, int>> frontier{{runtime.state(), 0}};
   std::unordered_set<std::string> seen{engines::state_key(runtime.state())};
   while (!frontier.empty()) {
-    const engines::RunState state = frontier.front();
+    const auto [state, depth] = frontier.front();
     frontier.pop_front();
     EXPECT_TRUE(runtime.restore(state) && runtime.compute_items());
     const std::vector<engines::Item> items = runtime.items();
-    if (predicate(state, layout, items.empty())) return true;
+    if (predicate(state, layout, items.empty())) return depth;
     for (const engines::Item& item : items) {
       runtime.restore(state);
       runtime.compute_items();
       EXPECT_TRUE(runtime.execute(item, state.now));
       if (seen.insert(engines::state_key(runtime.state())).second) {
-        frontier.push_back(runtime.state());
+        frontier.emplace_back(runtime.state(), depth + 1);
       }
     }
   }
-  return false;
+  return -1;
+}
+
+/// Whether some reachable state of `system` satisfies `predicate` (breadth first, every state).
+inline bool some_reachable(const bipc::ir::System& system, const StatePredicate& predicate) {
+  return shortest_distance(system, predicate) >= 0;
 }
 
 /// The number of reachable deadlocks, as `smcbip simulate --explore` counts them.

@@ -12,15 +12,13 @@
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 #include "tests/fdir/exhaustive.h"
+#include "tests/fdir/prove_support.h"
 
 namespace smcbip::fdir {
 namespace {
 
-const std::string kSource = SMCBIP_SOURCE_DIR;
-
-std::optional<bipc::ir::System> load(const std::string& file, const std::string& root) {
-  return tests::load_model(kSource + "/" + file, root);
-}
+using testing::load;
+using testing::prove_text;
 
 /// Every reachable marking of `system`, per global place of its net.
 std::vector<std::vector<std::uint8_t>> reachable_markings(const bipc::ir::System& system,
@@ -182,16 +180,6 @@ bool marks(const bipc::ir::System& system, const engines::RunState& s,
   }
   ADD_FAILURE() << "no place " << atom << "." << place;
   return false;
-}
-
-QueryOutcome prove_text(const bipc::ir::System& system, const std::string& text,
-                        const ProveOptions& options) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(text, "query.mtl");
-  if (parsed.ok()) monitors::resolve_names(parsed.file, system, parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  if (!parsed.ok()) return {};
-  Prover prover(system, options);
-  return prover.prove(parsed.file.queries.front(), monitors::constant_values(parsed.file));
 }
 
 ProveOptions with(Method method, std::uint64_t explore_depth = 1000) {

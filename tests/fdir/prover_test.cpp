@@ -8,30 +8,18 @@
 #include "monitors/monitors.h"
 #include "tests/engines/temp_model.h"
 #include "tests/fdir/exhaustive.h"
+#include "tests/fdir/prove_support.h"
 
 namespace smcbip::fdir {
 namespace {
-
-const std::string kSource = SMCBIP_SOURCE_DIR;
 
 struct Case {
   std::string file, root;
 };
 
-std::optional<bipc::ir::System> load(const Case& c) {
-  return tests::load_model(kSource + "/" + c.file, c.root);
-}
+using testing::prove_text;
 
-/// The outcome of the single query `text` on `system`.
-QueryOutcome prove_text(const bipc::ir::System& system, const std::string& text,
-                        const ProveOptions& options = {}) {
-  monitors::ParsedProperties parsed = monitors::parse_properties(text, "query.mtl");
-  if (parsed.ok()) monitors::resolve_names(parsed.file, system, parsed.diagnostics);
-  EXPECT_TRUE(parsed.ok()) << parsed.diagnostics.format(parsed.sources);
-  if (!parsed.ok()) return {};
-  Prover prover(system, options);
-  return prover.prove(parsed.file.queries.front(), monitors::constant_values(parsed.file));
-}
+std::optional<bipc::ir::System> load(const Case& c) { return testing::load(c.file, c.root); }
 
 const Case kOneAtATime{"models/fdir/benchmarks/philosophers_one_at_a_time.bip", "Table()"};
 const Case kTogether{"models/fdir/benchmarks/philosophers_together.bip", "Table()"};
