@@ -46,6 +46,22 @@ std::string assumptions_text(const QueryOutcome& o) {
   return ", under " + std::to_string(n) + (n == 1 ? " assumption" : " assumptions");
 }
 
+/// `1 trap`, `2 traps`.
+std::string counted(std::size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+/// What a candidate was checked against: every invariant the query's SMT check had.
+std::string invariants_text(const QueryOutcome& o) {
+  std::string text = "the component invariants (data invariants of " +
+                     counted(o.component_invariants, "atom") + "), " + counted(o.traps, "trap");
+  if (o.linear) {
+    text += ", " + counted(o.place_invariants, "place invariant");
+    if (o.state_equation) text += ", the state equation";
+  }
+  return text;
+}
+
 void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutcome& o) {
   out << monitors::to_string(q) << "  " << verdict_text(o.verdict) << " (" << o.method
       << assumptions_text(o) << "; traps " << o.traps << ", linear " << (o.linear ? "yes" : "no")
@@ -59,7 +75,9 @@ void print_outcome(std::ostream& out, const monitors::Query& q, const QueryOutco
   if (o.verdict == Verdict::Open) {
     out << "  candidate:";
     for (const std::string& c : o.candidate) out << " " << c;
-    out << "\n  " << o.note << "\n";
+    out << "\n  checked against: " << invariants_text(o) << "\n  " << o.note
+        << "\n  an inductive assumption relating these places and data (--assume FILE.smt2, "
+           "see docs/prove.md) may exclude it\n";
   }
 }
 
