@@ -3,26 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
 #include <cstdint>
-#include <cstdlib>
-#include <new>
 #include <variant>
 
+#include "counting_new.h"
 #include "packets/packets.h"
 #include "random_packets.h"
-
-namespace {
-std::atomic<std::size_t> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace smcbip::pus {
 namespace {
@@ -34,21 +20,21 @@ TEST(PusNoHeap, EncodeAndDecodeEveryTypeWithoutAllocating) {
   for (const MessageType& type : message_types()) {
     Packet packet = type.direction == PacketType::Tc ? Packet{random.telecommand(type)}
                                                      : Packet{random.telemetry(type)};
-    const std::size_t before = allocations.load();
+    const std::size_t before = testing::allocations.load();
     auto length = std::visit([&](const auto& p) { return encode(p, Config{}, out); }, packet);
     ASSERT_TRUE(length.ok());
     auto back = decode(std::span<const std::uint8_t>(out.data(), length.value()), Config{});
     ASSERT_TRUE(back.ok());
     auto refused = decode(std::span<const std::uint8_t>(out.data(), length.value() - 1), Config{});
     ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(allocations.load(), before) << type.name;
+    EXPECT_EQ(testing::allocations.load(), before) << type.name;
     ++decoded;
   }
   EXPECT_EQ(decoded, message_types().size());
   // The counter sees allocations at all: the check above cannot pass vacuously.
-  const std::size_t before = allocations.load();
+  const std::size_t before = testing::allocations.load();
   void* probe = ::operator new(16);  // a direct call, which the compiler may not elide
-  EXPECT_EQ(allocations.load(), before + 1);
+  EXPECT_EQ(testing::allocations.load(), before + 1);
   ::operator delete(probe);
 }
 

@@ -1,23 +1,9 @@
 // The services' packet path allocates nothing once the application is built: a TC received,
 // executed and answered, and the periodic work, under a counting global operator new.
-#include <atomic>
-#include <cstdlib>
 #include <filesystem>
-#include <new>
 
+#include "counting_new.h"
 #include "services_test_support.h"
-
-namespace {
-std::atomic<std::size_t> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace smcbip::pus::services {
 namespace {
@@ -29,7 +15,7 @@ TEST(PusServicesNoHeap, ReceiveExecuteAndTickWithoutAllocating) {
   const std::vector<std::vector<std::uint8_t>> requests{
       testing::tc_bytes(17, 1, NoData{}, 0), testing::tc_bytes(3, 5, testing::ids({1}), 1),
       testing::tc_bytes(20, 3, hot, 2), testing::tc_bytes(20, 1, testing::ids({1, 2, 3}), 3)};
-  const std::size_t before = allocations.load();
+  const std::size_t before = pus::testing::allocations.load();
   Millis now = 0;
   for (const auto& request : requests) {
     app->receive(request, now);
@@ -38,7 +24,7 @@ TEST(PusServicesNoHeap, ReceiveExecuteAndTickWithoutAllocating) {
     app->tick(now);
     while (app->tm().front() != nullptr) app->tm().pop();
   }
-  EXPECT_EQ(allocations.load(), before);
+  EXPECT_EQ(pus::testing::allocations.load(), before);
   EXPECT_EQ(app->parameters().value(3), 0);  // the action ran
 }
 
@@ -69,12 +55,12 @@ TEST(PusServicesNoHeap, FileManagementWithoutAllocating) {
       testing::tc_bytes(23, 1, create, 0), testing::tc_bytes(23, 14, copy, 1),
       testing::tc_bytes(23, 3, copied, 2), testing::tc_bytes(23, 2, copied, 3),
       testing::tc_bytes(23, 2, copied, 4), testing::tc_bytes(23, 1, outside, 5)};
-  const std::size_t before = allocations.load();
+  const std::size_t before = pus::testing::allocations.load();
   for (const auto& request : requests) {
     app.receive(request, 0);
     while (app.tm().front() != nullptr) app.tm().pop();
   }
-  EXPECT_EQ(allocations.load(), before);
+  EXPECT_EQ(pus::testing::allocations.load(), before);
   EXPECT_EQ(std::filesystem::file_size(root / "a"), 10U);
   EXPECT_FALSE(std::filesystem::exists(root / "b"));
   std::filesystem::remove_all(root);
