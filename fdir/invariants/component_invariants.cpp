@@ -65,12 +65,7 @@ namespace {
 /// `param`'s data.
 bool down_writes(const bipc::ir::ConnectorType& type, Index param) {
   for (const bipc::ir::InteractionCode& code : type.interactions) {
-    for (const bipc::ir::Instr& in : code.down.instrs) {
-      if (in.op == bipc::ir::Op::Store && in.scope == bipc::ir::Scope::PortParam &&
-          in.index == param) {
-        return true;
-      }
-    }
+    if (writes_port(code.down, param)) return true;
   }
   return false;
 }

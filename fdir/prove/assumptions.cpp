@@ -183,17 +183,6 @@ struct Effect {
   z3::expr_vector from, to;
 };
 
-/// Whether `down` stores into the data of port parameter `param`.
-bool writes_port(const bipc::ir::Code& down, Index param) {
-  for (const bipc::ir::Instr& in : down.instrs) {
-    if (in.op == bipc::ir::Op::Store && in.scope == bipc::ir::Scope::PortParam &&
-        in.index == param) {
-      return true;
-    }
-  }
-  return false;
-}
-
 /// Adds the new values of `atom`'s followed data to `effect`, with their 64-bit bounds.
 void add_data(const StateEncoding& state, Index atom, const std::vector<z3::expr>& values,
               Effect& effect) {

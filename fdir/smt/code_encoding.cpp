@@ -255,4 +255,14 @@ void CodeEncoder::statement(const bipc::ir::Code& code, CodeFrame& frame) {
   }
 }
 
+bool writes_port(const bipc::ir::Code& down, bipc::ir::Index param) {
+  for (const bipc::ir::Instr& in : down.instrs) {
+    if (in.op == bipc::ir::Op::Store && in.scope == bipc::ir::Scope::PortParam &&
+        in.index == param) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace smcbip::fdir

@@ -61,6 +61,10 @@ class CodeEncoder {
 /// `e` (an integer term) lies in the engines' 64-bit range; true for other sorts.
 z3::expr int64_bounds(const z3::expr& e);
 
+/// Whether the connector code `down` stores into the data of port parameter `param` (the data
+/// transfer the encodings do not follow, havocking what it writes).
+bool writes_port(const bipc::ir::Code& down, bipc::ir::Index param);
+
 /// The constant value as a term (Bool or Int; other kinds are unknown to `encoder`).
 z3::expr value_term(CodeEncoder& encoder, const bipc::ir::Value& value);
 
