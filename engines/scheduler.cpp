@@ -3,6 +3,7 @@
 #include "engines/detail/scheduler.h"
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <thread>
 
@@ -22,6 +23,23 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
   return r;
 }
 
+/// Whether code of the system reads a clock or calls an extern function, except the
+/// parameters of @stochastic ports (they only draw dates): then the places and data alone no
+/// longer decide what is enabled and what the actions write.
+bool reads_clocks_or_calls(const bipc::ir::System& system) {
+  bool found = false;
+  bipc::ir::for_each_code(system, [&](const bipc::ir::Code& code, bipc::ir::CodeUse use) {
+    if (use == bipc::ir::CodeUse::Value) return;
+    for (const bipc::ir::Instr& instr : code.instrs) {
+      if (instr.op == bipc::ir::Op::Call ||
+          (instr.op == bipc::ir::Op::Load && instr.scope == bipc::ir::Scope::Clock)) {
+        found = true;
+      }
+    }
+  });
+  return found;
+}
+
 }  // namespace
 
 void Simulator::Shared::prepare(const Externs& externs) {
@@ -31,6 +49,8 @@ void Simulator::Shared::prepare(const Externs& externs) {
   if (problem.empty()) problem = load_custom_distributions(system, custom);
   seed = options.seed ? *options.seed : std::random_device{}();
   stochastic = options.stochastic.value_or(has_stochastic_ports(system));
+  absorbing_checks = options.stop_absorbing && problem.empty() && layout.extern_ports.empty() &&
+                     !reads_clocks_or_calls(system);
 }
 
 namespace detail {
@@ -55,7 +75,42 @@ bool Scheduler::restart(std::uint64_t run_index) {
   random_ = RandomStream(shared_.seed, run_index);
   planner_.forget();
   steps_ = 0;
+  idle_step_ = false;
   return start();
+}
+
+void Scheduler::remember_discrete_state() {
+  const RunState& state = runtime_.state();
+  data_before_.assign(state.data.begin(), state.data.end());
+  marking_before_.assign(state.marking.begin(), state.marking.end());
+  resume_before_.assign(state.resume_pending.begin(), state.resume_pending.end());
+}
+
+bool Scheduler::discrete_state_kept(const RunState& state) const {
+  // Bytes, as the explorer keys states: equal strings have equal ids.
+  return state.marking == marking_before_ && state.resume_pending == resume_before_ &&
+         std::equal(state.data.begin(), state.data.end(), data_before_.begin(), data_before_.end(),
+                    [](Val a, Val b) { return std::memcmp(&a, &b, sizeof(Val)) == 0; });
+}
+
+bool Scheduler::absorbing(bool& failed) {
+  absorbing_probe_ = runtime_.state();
+  const std::size_t count = runtime_.item_count();
+  const TimeValue now = absorbing_probe_.now;
+  bool kept = true;
+  for (std::size_t k = 0; k < count && kept; ++k) {
+    // Each item from the probed state: restore recomputes the offers that execute consumed.
+    if (k > 0 && (!runtime_.restore(absorbing_probe_) || !runtime_.compute_items())) {
+      kept = false;
+      break;
+    }
+    remember_discrete_state();
+    kept = runtime_.execute(runtime_.item(k), now) && runtime_.resume_atoms(now) &&
+           discrete_state_kept(runtime_.state());
+  }
+  failed = !runtime_.restore(absorbing_probe_) || !runtime_.compute_items();
+  if (failed) record_error();
+  return kept && !failed;
 }
 
 bool Scheduler::record_error() {

@@ -39,6 +39,9 @@ struct Simulator::Shared {
   std::string problem;
   std::uint64_t seed = 0;
   bool stochastic = false;
+  /// options.stop_absorbing on a model where the places and data alone decide what is
+  /// enabled (see SimulateOptions::stop_absorbing): runs look for absorbing states.
+  bool absorbing_checks = false;
 
   Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
   Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
@@ -146,6 +149,14 @@ class Scheduler {
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> race(bool& failed);
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>>
   earliest_in_window();
+  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
+  /// changed them.
+  void remember_discrete_state();
+  bool discrete_state_kept(const RunState& state) const;
+  /// Whether every item of the current state (its items computed) keeps its places, data and
+  /// pending resumes; the runtime is left in that state, its items computed again (`failed`
+  /// when that fails, with the runtime's error).
+  bool absorbing(bool& failed);
 
   Simulator::Shared& shared_;
   const SimulateOptions& options_;
@@ -159,6 +170,12 @@ class Scheduler {
   std::uint64_t steps_ = 0;
   ModelError error_;
   Decision decision_;
+  // absorbing_checks: the last step changed no place, data or pending resume, and the state
+  // before it.
+  bool idle_step_ = false;
+  std::vector<Val> data_before_;
+  std::vector<std::uint8_t> marking_before_, resume_before_;
+  RunState absorbing_probe_;  // the state whose items absorbing() tries
 };
 
 // The per-step functions are inlined into each scheduler loop (Simulator's, Execution's), as they
@@ -231,6 +248,12 @@ inline const Decision& Scheduler::decide() {
     }
     return receive(*arrival);
   }
+  if (idle_step_ && !arrival) {
+    idle_step_ = false;
+    bool failed = false;
+    if (absorbing(failed)) return end(RunEnd::Absorbing);
+    if (failed) return fail();
+  }
   if (options_.limit && steps_ >= *options_.limit) return end(RunEnd::Limit);
   bool failed = false;
   const std::optional<std::pair<std::size_t, TimeValue>> choice = choose(failed);
@@ -251,9 +274,12 @@ inline bool Scheduler::perform(const Decision& decision) {
   if (decision.kind == Decision::Kind::Receive) {
     return runtime_.receive_unexpected_events(decision.date) || record_error();
   }
+  if (shared_.absorbing_checks) remember_discrete_state();
   if (!runtime_.execute(decision.item, decision.date)) return record_error();
   ++steps_;
-  return options_.real_time || runtime_.resume_atoms(decision.date) || record_error();
+  if (!options_.real_time && !runtime_.resume_atoms(decision.date)) return record_error();
+  if (shared_.absorbing_checks) idle_step_ = discrete_state_kept(runtime_.state());
+  return true;
 }
 
 }  // namespace detail
