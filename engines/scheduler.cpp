@@ -55,15 +55,50 @@ void Simulator::Shared::prepare(const Externs& externs) {
 
 namespace detail {
 
+RunParts::RunParts(Simulator::Shared& shared, std::ostream& model_output)
+    : output(&model_output),
+      random(shared.seed, 0),
+      runtime(shared.model, shared.layout, shared.functions, shared.strings, model_output, random,
+              runtime_options(shared.options)),
+      planner(shared.system, shared.custom, random, shared.options.unbounded_mean) {}
+
+namespace {
+
+/// The spare parts of `shared` that write to `output`, or new ones.
+std::unique_ptr<RunParts> take_parts(Simulator::Shared& shared, std::ostream& output) {
+  auto& spare = shared.spare_parts;
+  const auto it = std::find_if(spare.begin(), spare.end(),
+                               [&](const auto& parts) { return parts->output == &output; });
+  if (it == spare.end()) return std::make_unique<RunParts>(shared, output);
+  std::unique_ptr<RunParts> parts = std::move(*it);
+  spare.erase(it);
+  return parts;
+}
+
+}  // namespace
+
 Scheduler::Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::ostream& model_output,
                      ItemPicker* picker)
     : shared_(shared),
       options_(shared.options),
       picker_(picker),
-      random_(shared.seed, run_index),
-      runtime_(shared.model, shared.layout, shared.functions, shared.strings, model_output, random_,
-               runtime_options(shared.options)),
-      planner_(shared.system, shared.custom, random_, shared.options.unbounded_mean) {}
+      parts_(take_parts(shared, model_output)),
+      random_(parts_->random),
+      shared_window_(parts_->shared_window),
+      runtime_(parts_->runtime),
+      planner_(parts_->planner),
+      dates_(parts_->dates),
+      planner_problem_(parts_->planner_problem) {
+  // As restart(): start() initialises the runtime whatever run it made before.
+  random_ = RandomStream(shared.seed, run_index);
+  planner_.forget();
+}
+
+Scheduler::~Scheduler() {
+  // A few are enough: one simulator makes one run at a time.
+  constexpr std::size_t kMaxSpare = 4;
+  if (shared_.spare_parts.size() < kMaxSpare) shared_.spare_parts.push_back(std::move(parts_));
+}
 
 bool Scheduler::start() {
   if (!runtime_.initialize()) return record_error();

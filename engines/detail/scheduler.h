@@ -23,6 +23,10 @@
 
 namespace smcbip::engines {
 
+namespace detail {
+struct RunParts;
+}
+
 /// What the runs of one model share: the layout, the bound externs, the seed.
 struct Simulator::Shared {
   std::unique_ptr<InterpretedModel> owned;  // when built from an IR
@@ -42,6 +46,9 @@ struct Simulator::Shared {
   /// options.stop_absorbing on a model where the places and data alone decide what is
   /// enabled (see SimulateOptions::stop_absorbing): runs look for absorbing states.
   bool absorbing_checks = false;
+  /// The runtimes (with their buffers) of runs that ended, for the next runs to take over
+  /// rather than build their own: one run's set-up cost as much as a short run.
+  std::vector<std::unique_ptr<detail::RunParts>> spare_parts;
 
   Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
   Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
@@ -99,14 +106,33 @@ class ItemPicker {
   virtual std::optional<std::size_t> pick(const Runtime& runtime) = 0;
 };
 
+/// What a run builds once and a later run of the same simulator (writing the model's output to
+/// the same stream) takes over: the runtime with its buffers, the date planner, the stream they
+/// draw from.
+struct RunParts {
+  RunParts(Simulator::Shared& shared, std::ostream& model_output);
+  std::ostream* output;
+  RandomStream random;
+  SharedWindowChooser shared_window;
+  Runtime runtime;
+  DatePlanner planner;
+  std::vector<TimeValue> dates;  // the stochastic race's planned dates, per item
+  std::string planner_problem;   // reused: planning a date may fail with a message
+};
+
 /// One run's random stream, semantics and choice of items: the reference engine's random race
 /// of dates (or its two-draw shortcut on a shared window), the stochastic race of planned dates,
 /// or a picker's choice. In simulated time it also resumes atoms after each step; real time is
 /// left to the caller (it waits, then checks time safety, which resumes).
 class Scheduler {
  public:
+  /// Takes over the parts a finished run left in `shared` when it wrote to `model_output`.
   Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::ostream& model_output,
             ItemPicker* picker = nullptr);
+  /// Leaves its parts to the next run.
+  ~Scheduler();
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
 
   /// Initial actions and checks, and in simulated time the initial resumes; false with error()
   /// set on failure.
@@ -161,12 +187,13 @@ class Scheduler {
   Simulator::Shared& shared_;
   const SimulateOptions& options_;
   ItemPicker* picker_;
-  RandomStream random_;
-  SharedWindowChooser shared_window_;
-  Runtime runtime_;
-  DatePlanner planner_;
-  std::vector<TimeValue> dates_;  // the stochastic race's planned dates, per item
-  std::string planner_problem_;   // reused: planning a date may fail with a message
+  std::unique_ptr<RunParts> parts_;
+  RandomStream& random_;
+  SharedWindowChooser& shared_window_;
+  Runtime& runtime_;
+  DatePlanner& planner_;
+  std::vector<TimeValue>& dates_;
+  std::string& planner_problem_;
   std::uint64_t steps_ = 0;
   ModelError error_;
   Decision decision_;
