@@ -8,7 +8,7 @@ ROOT := 'RoverSystem()'
 FORMAT_DIRS := bipc engines monitors smc tests bench
 PREFIX ?= /usr/local
 
-.PHONY: all deps build tools install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check bench-mpi format clean
+.PHONY: all deps build tools install demo test test-slow fuzz fuzz-build fuzz-smoke bench bench-engines bench-generated bench-monitor bench-check bench-peers bench-mpi format clean
 
 all: build
 
@@ -130,6 +130,10 @@ bench-generated: build
 # Runs per second of smcbip check on one thread and on all cores (reports, never fails).
 bench-check: build
 	bench/check_runs.sh $(BUILD_DIR)
+
+# smcbip check beside Ymer and PRISM (YMER=... PRISM=... point to them; reports, never fails).
+bench-peers: build
+	bench/peers.sh $(BUILD_DIR)
 
 # smcbip check on 1 process and on MPI jobs of 2 to 4 ranks; the consumer's own cost per run.
 bench-mpi: build

@@ -63,6 +63,11 @@ struct SimulateOptions {
   std::optional<bool> stochastic;
   /// Stochastic mode: mean delay of an item whose window has no right end (exponential).
   TimeValue unbounded_mean = 1'000'000;  // 1 ms
+  /// End a run with RunEnd::Absorbing in a state it can no longer leave: every item enabled
+  /// there keeps the places and data as they are (PRISM's simulator stops its paths there).
+  /// Only on models whose guards and actions read no clock and call no extern function, and
+  /// that have no extern port: there the places and data alone decide what is enabled.
+  bool stop_absorbing = false;
 };
 
 /// The result of a run: its code (RunCode), how it ended, and the number of steps executed.

@@ -61,7 +61,9 @@ struct StepInfo {
   bipc::ir::Index atom = bipc::ir::kNone, port = bipc::ir::kNone;  // Internal, External
 };
 
-enum class RunEnd : std::uint8_t { Deadlock, Timelock, Limit, Stopped, Error };
+/// How a run ended. Absorbing (SimulateOptions::stop_absorbing): items are still enabled but
+/// none of them changes the places or data any more (clocks may still be reset).
+enum class RunEnd : std::uint8_t { Deadlock, Timelock, Limit, Stopped, Error, Absorbing };
 
 class RunObserver {
  public:

@@ -3,6 +3,7 @@
 #include "engines/detail/scheduler.h"
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <thread>
 
@@ -22,6 +23,23 @@ RuntimeOptions runtime_options(const SimulateOptions& options) {
   return r;
 }
 
+/// Whether code of the system reads a clock or calls an extern function, except the
+/// parameters of @stochastic ports (they only draw dates): then the places and data alone no
+/// longer decide what is enabled and what the actions write.
+bool reads_clocks_or_calls(const bipc::ir::System& system) {
+  bool found = false;
+  bipc::ir::for_each_code(system, [&](const bipc::ir::Code& code, bipc::ir::CodeUse use) {
+    if (use == bipc::ir::CodeUse::Value) return;
+    for (const bipc::ir::Instr& instr : code.instrs) {
+      if (instr.op == bipc::ir::Op::Call ||
+          (instr.op == bipc::ir::Op::Load && instr.scope == bipc::ir::Scope::Clock)) {
+        found = true;
+      }
+    }
+  });
+  return found;
+}
+
 }  // namespace
 
 void Simulator::Shared::prepare(const Externs& externs) {
@@ -31,19 +49,56 @@ void Simulator::Shared::prepare(const Externs& externs) {
   if (problem.empty()) problem = load_custom_distributions(system, custom);
   seed = options.seed ? *options.seed : std::random_device{}();
   stochastic = options.stochastic.value_or(has_stochastic_ports(system));
+  absorbing_checks = options.stop_absorbing && problem.empty() && layout.extern_ports.empty() &&
+                     !reads_clocks_or_calls(system);
 }
 
 namespace detail {
+
+RunParts::RunParts(Simulator::Shared& shared, std::ostream& model_output)
+    : output(&model_output),
+      random(shared.seed, 0),
+      runtime(shared.model, shared.layout, shared.functions, shared.strings, model_output, random,
+              runtime_options(shared.options)),
+      planner(shared.system, shared.custom, random, shared.options.unbounded_mean) {}
+
+namespace {
+
+/// The spare parts of `shared` that write to `output`, or new ones.
+std::unique_ptr<RunParts> take_parts(Simulator::Shared& shared, std::ostream& output) {
+  auto& spare = shared.spare_parts;
+  const auto it = std::find_if(spare.begin(), spare.end(),
+                               [&](const auto& parts) { return parts->output == &output; });
+  if (it == spare.end()) return std::make_unique<RunParts>(shared, output);
+  std::unique_ptr<RunParts> parts = std::move(*it);
+  spare.erase(it);
+  return parts;
+}
+
+}  // namespace
 
 Scheduler::Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::ostream& model_output,
                      ItemPicker* picker)
     : shared_(shared),
       options_(shared.options),
       picker_(picker),
-      random_(shared.seed, run_index),
-      runtime_(shared.model, shared.layout, shared.functions, shared.strings, model_output, random_,
-               runtime_options(shared.options)),
-      planner_(shared.system, shared.custom, random_, shared.options.unbounded_mean) {}
+      parts_(take_parts(shared, model_output)),
+      random_(parts_->random),
+      shared_window_(parts_->shared_window),
+      runtime_(parts_->runtime),
+      planner_(parts_->planner),
+      dates_(parts_->dates),
+      planner_problem_(parts_->planner_problem) {
+  // As restart(): start() initialises the runtime whatever run it made before.
+  random_ = RandomStream(shared.seed, run_index);
+  planner_.forget();
+}
+
+Scheduler::~Scheduler() {
+  // A few are enough: one simulator makes one run at a time.
+  constexpr std::size_t kMaxSpare = 4;
+  if (shared_.spare_parts.size() < kMaxSpare) shared_.spare_parts.push_back(std::move(parts_));
+}
 
 bool Scheduler::start() {
   if (!runtime_.initialize()) return record_error();
@@ -55,7 +110,42 @@ bool Scheduler::restart(std::uint64_t run_index) {
   random_ = RandomStream(shared_.seed, run_index);
   planner_.forget();
   steps_ = 0;
+  idle_step_ = false;
   return start();
+}
+
+void Scheduler::remember_discrete_state() {
+  const RunState& state = runtime_.state();
+  data_before_.assign(state.data.begin(), state.data.end());
+  marking_before_.assign(state.marking.begin(), state.marking.end());
+  resume_before_.assign(state.resume_pending.begin(), state.resume_pending.end());
+}
+
+bool Scheduler::discrete_state_kept(const RunState& state) const {
+  // Bytes, as the explorer keys states: equal strings have equal ids.
+  return state.marking == marking_before_ && state.resume_pending == resume_before_ &&
+         std::equal(state.data.begin(), state.data.end(), data_before_.begin(), data_before_.end(),
+                    [](Val a, Val b) { return std::memcmp(&a, &b, sizeof(Val)) == 0; });
+}
+
+bool Scheduler::absorbing(bool& failed) {
+  absorbing_probe_ = runtime_.state();
+  const std::size_t count = runtime_.item_count();
+  const TimeValue now = absorbing_probe_.now;
+  bool kept = true;
+  for (std::size_t k = 0; k < count && kept; ++k) {
+    // Each item from the probed state: restore recomputes the offers that execute consumed.
+    if (k > 0 && (!runtime_.restore(absorbing_probe_) || !runtime_.compute_items())) {
+      kept = false;
+      break;
+    }
+    remember_discrete_state();
+    kept = runtime_.execute(runtime_.item(k), now) && runtime_.resume_atoms(now) &&
+           discrete_state_kept(runtime_.state());
+  }
+  failed = !runtime_.restore(absorbing_probe_) || !runtime_.compute_items();
+  if (failed) record_error();
+  return kept && !failed;
 }
 
 bool Scheduler::record_error() {

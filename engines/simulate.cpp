@@ -140,7 +140,7 @@ class Simulation {
   /// engine in simulated time without a text trace or a prompt.
   CompiledSteps* compiled_steps() {
     if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
-        picked_ || verbose_ || options_.disable_maximal_progress) {
+        picked_ || verbose_ || options_.disable_maximal_progress || shared_.absorbing_checks) {
       return nullptr;
     }
     compiled_ = runtime_.code().make_steps(shared_.system, shared_.layout);
@@ -231,6 +231,9 @@ class Simulation {
         return end({kRunOk, RunEnd::Limit, steps_, {}, {}});
       case RunEnd::Stopped:
         return stopped();
+      case RunEnd::Absorbing:
+        header("absorbing state!");
+        return end({kRunOk, RunEnd::Absorbing, steps_, {}, {}});
       case RunEnd::Error:
         break;
     }

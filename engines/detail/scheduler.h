@@ -23,6 +23,10 @@
 
 namespace smcbip::engines {
 
+namespace detail {
+struct RunParts;
+}
+
 /// What the runs of one model share: the layout, the bound externs, the seed.
 struct Simulator::Shared {
   std::unique_ptr<InterpretedModel> owned;  // when built from an IR
@@ -39,6 +43,12 @@ struct Simulator::Shared {
   std::string problem;
   std::uint64_t seed = 0;
   bool stochastic = false;
+  /// options.stop_absorbing on a model where the places and data alone decide what is
+  /// enabled (see SimulateOptions::stop_absorbing): runs look for absorbing states.
+  bool absorbing_checks = false;
+  /// The runtimes (with their buffers) of runs that ended, for the next runs to take over
+  /// rather than build their own: one run's set-up cost as much as a short run.
+  std::vector<std::unique_ptr<detail::RunParts>> spare_parts;
 
   Shared(const Model& m, const SimulateOptions& o) : model(m), system(m.system()), options(o) {}
   Shared(std::unique_ptr<InterpretedModel> m, const SimulateOptions& o)
@@ -99,14 +109,33 @@ class ItemPicker {
   virtual std::optional<TimeValue> date() const { return std::nullopt; }
 };
 
+/// What a run builds once and a later run of the same simulator (writing the model's output to
+/// the same stream) takes over: the runtime with its buffers, the date planner, the stream they
+/// draw from.
+struct RunParts {
+  RunParts(Simulator::Shared& shared, std::ostream& model_output);
+  std::ostream* output;
+  RandomStream random;
+  SharedWindowChooser shared_window;
+  Runtime runtime;
+  DatePlanner planner;
+  std::vector<TimeValue> dates;  // the stochastic race's planned dates, per item
+  std::string planner_problem;   // reused: planning a date may fail with a message
+};
+
 /// One run's random stream, semantics and choice of items: the reference engine's random race
 /// of dates (or its two-draw shortcut on a shared window), the stochastic race of planned dates,
 /// or a picker's choice. In simulated time it also resumes atoms after each step; real time is
 /// left to the caller (it waits, then checks time safety, which resumes).
 class Scheduler {
  public:
+  /// Takes over the parts a finished run left in `shared` when it wrote to `model_output`.
   Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::ostream& model_output,
             ItemPicker* picker = nullptr);
+  /// Leaves its parts to the next run.
+  ~Scheduler();
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
 
   /// Initial actions and checks, and in simulated time the initial resumes; false with error()
   /// set on failure.
@@ -149,19 +178,34 @@ class Scheduler {
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> race(bool& failed);
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>>
   earliest_in_window();
+  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
+  /// changed them.
+  void remember_discrete_state();
+  bool discrete_state_kept(const RunState& state) const;
+  /// Whether every item of the current state (its items computed) keeps its places, data and
+  /// pending resumes; the runtime is left in that state, its items computed again (`failed`
+  /// when that fails, with the runtime's error).
+  bool absorbing(bool& failed);
 
   Simulator::Shared& shared_;
   const SimulateOptions& options_;
   ItemPicker* picker_;
-  RandomStream random_;
-  SharedWindowChooser shared_window_;
-  Runtime runtime_;
-  DatePlanner planner_;
-  std::vector<TimeValue> dates_;  // the stochastic race's planned dates, per item
-  std::string planner_problem_;   // reused: planning a date may fail with a message
+  std::unique_ptr<RunParts> parts_;
+  RandomStream& random_;
+  SharedWindowChooser& shared_window_;
+  Runtime& runtime_;
+  DatePlanner& planner_;
+  std::vector<TimeValue>& dates_;
+  std::string& planner_problem_;
   std::uint64_t steps_ = 0;
   ModelError error_;
   Decision decision_;
+  // absorbing_checks: the last step changed no place, data or pending resume, and the state
+  // before it.
+  bool idle_step_ = false;
+  std::vector<Val> data_before_;
+  std::vector<std::uint8_t> marking_before_, resume_before_;
+  RunState absorbing_probe_;  // the state whose items absorbing() tries
 };
 
 // The per-step functions are inlined into each scheduler loop (Simulator's, Execution's), as they
@@ -238,6 +282,12 @@ inline const Decision& Scheduler::decide() {
     }
     return receive(*arrival);
   }
+  if (idle_step_ && !arrival) {
+    idle_step_ = false;
+    bool failed = false;
+    if (absorbing(failed)) return end(RunEnd::Absorbing);
+    if (failed) return fail();
+  }
   if (options_.limit && steps_ >= *options_.limit) return end(RunEnd::Limit);
   bool failed = false;
   const std::optional<std::pair<std::size_t, TimeValue>> choice = choose(failed);
@@ -258,9 +308,12 @@ inline bool Scheduler::perform(const Decision& decision) {
   if (decision.kind == Decision::Kind::Receive) {
     return runtime_.receive_unexpected_events(decision.date) || record_error();
   }
+  if (shared_.absorbing_checks) remember_discrete_state();
   if (!runtime_.execute(decision.item, decision.date)) return record_error();
   ++steps_;
-  return options_.real_time || runtime_.resume_atoms(decision.date) || record_error();
+  if (!options_.real_time && !runtime_.resume_atoms(decision.date)) return record_error();
+  if (shared_.absorbing_checks) idle_step_ = discrete_state_kept(runtime_.state());
+  return true;
 }
 
 }  // namespace detail

@@ -1,6 +1,7 @@
 // Clock bounds: recognition of the guard form and its dates, as holds_when computes them.
 #include "engines/interpreter/clock_bounds.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engines/interpreter/detail/time_sets.h"
@@ -58,6 +59,15 @@ GuardBounds::GuardBounds(const bipc::ir::System& system)
       if (bounds_[guard.id]) codes_[guard.id] = &guard;
     }
   }
+  clock_free_.assign(system.code_count, nullptr);
+  bipc::ir::for_each_code(system, [&](const bipc::ir::Code& code, bipc::ir::CodeUse use) {
+    if (use != bipc::ir::CodeUse::Guard || code.id >= clock_free_.size()) return;
+    const bool reads_clock =
+        std::any_of(code.instrs.begin(), code.instrs.end(), [](const bipc::ir::Instr& in) {
+          return in.op == bipc::ir::Op::Load && in.scope == bipc::ir::Scope::Clock;
+        });
+    if (!reads_clock) clock_free_[code.id] = &code;
+  });
 }
 
 }  // namespace smcbip::engines

@@ -81,11 +81,17 @@ class GuardBounds {
     if (code.id >= codes_.size() || codes_[code.id] != &code) return nullptr;
     return &*bounds_[code.id];
   }
+  /// Whether `code` is a guard of the system that reads no clock: it holds at all dates or at
+  /// none, so the plain evaluator answers for it.
+  bool clock_free(const bipc::ir::Code& code) const {
+    return code.id < clock_free_.size() && clock_free_[code.id] == &code;
+  }
 
  private:
   // Per Code::id: the guard (null when it has no bounds) and its bounds.
   std::vector<const bipc::ir::Code*> codes_;
   std::vector<std::optional<ClockBounds>> bounds_;
+  std::vector<const bipc::ir::Code*> clock_free_;  // per Code::id: the guard, if clock-free
 };
 
 }  // namespace smcbip::engines

@@ -347,6 +347,9 @@ Interval CodeEvaluator::holds_when(const bipc::ir::Code& code, const Frame& fram
   // Without clocks a guard holds at all dates or at none: no need for time sets.
   if (frame.clocks == nullptr) return holds(code, frame) ? Interval::all() : Interval::none();
   if (guard_bounds_ != nullptr) {
+    if (guard_bounds_->clock_free(code)) {
+      return holds(code, frame) ? Interval::all() : Interval::none();
+    }
     if (const ClockBounds* bounds = guard_bounds_->find(code)) return bounds->holds_when(frame);
   }
   // As in run(), jumps go forward: neither stack outgrows the code.

@@ -50,6 +50,8 @@ const char* end_name(RunEnd end) {
       return "limit";
     case RunEnd::Stopped:
       return "stopped";
+    case RunEnd::Absorbing:
+      return "absorbing";
     default:
       return "error";
   }

@@ -165,6 +165,17 @@ bool reads_run_end(const Expr& e) {
                      [](const auto& operand) { return reads_run_end(*operand); });
 }
 
+bool reads_places_and_data_only(const Expr& e) {
+  if (e.kind == Expr::Kind::Fired) return false;
+  if (e.kind == Expr::Kind::Name) {
+    const Reference::Kind k = e.reference.kind;
+    return k != Reference::Kind::Clock && k != Reference::Kind::Time &&
+           k != Reference::Kind::Deadlock && k != Reference::Kind::Timelock;
+  }
+  return std::all_of(e.operands.begin(), e.operands.end(),
+                     [](const auto& operand) { return reads_places_and_data_only(*operand); });
+}
+
 Tick bound_ticks(const Value& v, const TimeScale& scale, const Bindings& bindings) {
   const double per = v.unit == TimeUnit::None ? scale.ticks_per_unit
                                               : scale.ticks_per_second * seconds_per(v.unit);
@@ -240,6 +251,7 @@ class OnlineMonitor::Builder {
     if (fresh_) {
       m_.leaves_.push_back({id, &predicate, negated, !pointwise_ && reads_growing(predicate),
                             reads_run_end(predicate)});
+      if (!reads_places_and_data_only(predicate)) m_.places_and_data_only_ = false;
     }
     return id;
   }
@@ -348,6 +360,7 @@ OnlineMonitor::OnlineMonitor(const OnlineMonitor& other)
       scale_(other.scale_),
       pointwise_(other.pointwise_),
       reads_steps_(other.reads_steps_),
+      places_and_data_only_(other.places_and_data_only_),
       time_bound_(other.time_bound_),
       step_bound_(other.step_bound_),
       nodes_(clone_all(other.nodes_)),
@@ -425,6 +438,7 @@ Verdict OnlineMonitor::step(const StateView& state, Tick time) {
 
 Verdict OnlineMonitor::end(RunEnd how) {
   if (decided_ || !started_) return verdict_;
+  if (how == RunEnd::Absorbing) how = places_and_data_only_ ? RunEnd::Deadlock : RunEnd::Cut;
   if (how == RunEnd::Deadlock) {
     emit_leaves(kForever, how);
     signals_.segments.finish();

@@ -40,9 +40,11 @@ enum class Verdict : std::uint8_t { False, True, Undecided };
 
 /// How a run ended after its last step: deadlocked (its last state holds forever, time passes
 /// and clocks grow), time-locked (time cannot pass its last step's: its last state, where
-/// timelock holds, decides what it can, and what follows is unknown), or cut short (a limit,
-/// an error, a stop: what follows is unknown).
-enum class RunEnd : std::uint8_t { Deadlock, Timelock, Cut };
+/// timelock holds, decides what it can, and what follows is unknown), cut short (a limit,
+/// an error, a stop: what follows is unknown), or absorbed (steps go on, but none changes the
+/// places or data: a formula that reads nothing else sees its last state forever, as after a
+/// deadlock; for one that reads clocks, time, events or how the run ends, it is cut short).
+enum class RunEnd : std::uint8_t { Deadlock, Timelock, Cut, Absorbing };
 
 /// The time scale of bounds: ticks per unit of the model (a number without a unit) and per
 /// second (numbers with s, ms, us, ns); bounds must come to whole ticks.
@@ -79,6 +81,10 @@ class Moment final : public StateView {
 
 /// Whether a state expression reads how the run ends (deadlock, timelock).
 bool reads_run_end(const Expr& e);
+/// Whether a state expression reads only places, data, constants and `init`: nothing that
+/// changes in a run whose places and data no longer change (clocks, time, fired, deadlock,
+/// timelock).
+bool reads_places_and_data_only(const Expr& e);
 
 /// The value of a state expression in `state`; names bound in `bindings` (constants,
 /// parameters) read from there. Conditions are 1 or 0.
@@ -126,6 +132,8 @@ class OnlineMonitor {
   Verdict verdict() const { return verdict_; }
   /// Whether the verdict is final: the steps read decided it, or the run ended.
   bool over() const { return decided_; }
+  /// Whether an Absorbing end decides the formula (it reads places and data only).
+  bool decided_by_absorbing() const { return places_and_data_only_; }
   /// Ready for a new run.
   void reset();
 
@@ -179,7 +187,8 @@ class OnlineMonitor {
   Bindings bindings_;
   TimeScale scale_;
   bool pointwise_ = false;
-  bool reads_steps_ = false;  // some node counts steps (X, step bounds): segments are kept
+  bool reads_steps_ = false;          // some node counts steps (X, step bounds): segments are kept
+  bool places_and_data_only_ = true;  // every leaf reads_places_and_data_only
   online::Tick time_bound_ = online::kNever;  // in half ticks
   std::int64_t step_bound_ = std::numeric_limits<std::int64_t>::max();
 

@@ -35,6 +35,8 @@ RunEnd monitor_end(engines::RunEnd end) {
       return RunEnd::Deadlock;
     case engines::RunEnd::Timelock:
       return RunEnd::Timelock;
+    case engines::RunEnd::Absorbing:
+      return RunEnd::Absorbing;
     default:
       return RunEnd::Cut;
   }

@@ -11,8 +11,8 @@
 
 namespace smcbip::monitors {
 
-/// How the monitors read the end of an engine's run: a deadlock and a time-lock decide, the
-/// other ends cut the run short.
+/// How the monitors read the end of an engine's run: a deadlock and a time-lock decide, an
+/// absorbing state decides formulas over places and data, the other ends cut the run short.
 RunEnd monitor_end(engines::RunEnd end);
 
 /// A state of a run as predicates read it: names resolved against the model (Expr::reference).
@@ -43,6 +43,8 @@ class RunMonitor final : public engines::RunObserver {
   void finish(engines::RunEnd end, int code, const std::string& message) override;
 
   Verdict verdict() const { return monitor_.verdict(); }
+  /// Whether an absorbing end decides the formula (engines::SimulateOptions::stop_absorbing).
+  bool decided_by_absorbing() const { return monitor_.decided_by_absorbing(); }
   /// For F phi: the time (ms) at which phi first held, once the verdict is true; NaN otherwise.
   double first_hit_ms() const;
   void reset() { monitor_.reset(); }

@@ -317,9 +317,10 @@ TraceReport check_trace(const PropertyFile& file, std::istream& in, const std::s
   }
   reader.finish();
   report.end = reader.end();
-  const RunEnd end = report.end == "deadlock"   ? RunEnd::Deadlock
-                     : report.end == "timelock" ? RunEnd::Timelock
-                                                : RunEnd::Cut;
+  const RunEnd end = report.end == "deadlock"    ? RunEnd::Deadlock
+                     : report.end == "timelock"  ? RunEnd::Timelock
+                     : report.end == "absorbing" ? RunEnd::Absorbing
+                                                 : RunEnd::Cut;
   for (auto& sweep : sweeps) sweep->end(end);
   for (Judge& judge : judges) {
     if (judge.monitor) judge.result.verdict = judge.monitor->end(end);

@@ -79,6 +79,7 @@ bool Answer::undecided(std::uint64_t index, engines::RunEnd end, const std::stri
       break;
     case engines::RunEnd::Deadlock:
     case engines::RunEnd::Stopped:
+    case engines::RunEnd::Absorbing:
       ++why.ended;
       break;
   }

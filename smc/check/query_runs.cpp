@@ -112,7 +112,6 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       traced_(!options.silent),
       trace_text_(std::make_unique<CappedText>()),
       trace_(trace_text_.get()) {
-  simulator_ = make_simulator(system, compiled, options, externs_);
   const monitors::Query& q = *query.query;
   if (query.swept) {
     double largest = 0;
@@ -122,6 +121,7 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
     }
     sweep_ = std::make_unique<monitors::RunCriticalBound>(
         *q.formula, *query.swept, largest, kNanoseconds, query.points.front(), q.run);
+    simulator_ = make_simulator(system, compiled, options, externs_);
     return;
   }
   for (const monitors::Bindings& b : query.points) {
@@ -132,6 +132,21 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
       extrema_.push_back(std::make_unique<monitors::RunExtremum>(q, kNanoseconds, b));
     }
   }
+  engines::SimulateOptions runs = options;
+  runs.stop_absorbing = stops_when_absorbed(q, query.points);
+  simulator_ = make_simulator(system, compiled, runs, externs_);
+}
+
+bool QueryRuns::stops_when_absorbed(const monitors::Query& q,
+                                    const std::vector<monitors::Bindings>& points) const {
+  // PRISM's simulator ends a path in a state it cannot leave, for the unbounded operators that
+  // would otherwise run to the step limit. A bounded formula ends by itself.
+  if (!q.formula || monitors_.empty() || q.run.kind != monitors::Bound::Kind::None) return false;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (!monitors_[p]->decided_by_absorbing()) return false;
+    if (monitors::horizon(*q.formula, kNanoseconds, points[p]).bounded) return false;
+  }
+  return true;
 }
 
 QueryRuns::~QueryRuns() = default;

@@ -66,6 +66,11 @@ class QueryRuns {
   class Observer;
   class CappedText;
 
+  /// Whether the runs of `q` end in absorbing states (engines::SimulateOptions::stop_absorbing):
+  /// the formula is unbounded and reads places and data only, at every point.
+  bool stops_when_absorbed(const monitors::Query& q,
+                           const std::vector<monitors::Bindings>& points) const;
+
   engines::Externs externs_;
   std::unique_ptr<engines::Simulator> simulator_;
   const QueryPoints& query_;

@@ -20,8 +20,8 @@ namespace smcbip::monitors::detail {
 using TraceClocks = std::unordered_map<std::string, double>;
 
 /// The reasons an end line may give, as `smcbip simulate --trace jsonl` writes them.
-inline constexpr std::string_view kEndReasons[] = {"deadlock", "timelock", "limit", "stopped",
-                                                   "error"};
+inline constexpr std::string_view kEndReasons[] = {"deadlock", "timelock", "limit",
+                                                   "stopped",  "error",    "absorbing"};
 
 /// The column (from 1) at which the value of the member `keys[0]` of the JSON object `text`,
 /// then of its member `keys[1]`, and so on, begins; 0 when there is none. `text` must be valid
