@@ -23,13 +23,13 @@ std::string marked(const ir::Transition& t) {
 std::string code_call(const ir::Code& code) { return "code_" + std::to_string(code.id) + "(c, f)"; }
 
 /// The dates at which the guard of transition `t` of type `type_index` holds, as ModelCode's
-/// holds_when answers for the generated code: plain guards hold at all dates or none; clock
-/// bounds by literals are narrowed in straight C++; other guards in atoms with clocks go to the
-/// time-set evaluator.
+/// holds_when answers for the generated code: guards that read no clock hold at all dates or
+/// none; clock bounds by literals are narrowed in straight C++; other guards go to the time-set
+/// evaluator.
 std::string guard_window(const ir::AtomType& type, ir::Index type_index, ir::Index t) {
   const ir::Code& guard = type.transitions[t].guard;
   if (guard.empty()) return "se::Interval::all()";
-  if (type.clocks.empty()) {
+  if (type.clocks.empty() || !ir::reads_clock(guard)) {
     return code_call(guard) + ".b ? se::Interval::all() : se::Interval::none()";
   }
   const std::string interpreted = "c.timed.holds_when(c.system.atom_types[" +

@@ -1,6 +1,7 @@
 // Recognition of guards that bound clocks by literals.
 #include "bipc/ir/clock_guard.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -63,6 +64,10 @@ std::optional<ClockComparison> comparison_at(const std::vector<Instr>& instrs, s
 }
 
 }  // namespace
+
+bool reads_clock(const Code& code) {
+  return std::any_of(code.instrs.begin(), code.instrs.end(), is_clock_load);
+}
 
 std::optional<std::vector<ClockComparison>> clock_comparisons(const Code& guard) {
   const std::vector<Instr>& instrs = guard.instrs;

@@ -32,6 +32,9 @@ inline Op turned_around(Op op) {
                         : op;
 }
 
+/// Whether `code` reads a clock of its atom (a guard that does not holds at all dates or none).
+bool reads_clock(const Code& code);
+
 /// The comparisons of `guard`, in order, if it has the form above.
 std::optional<std::vector<ClockComparison>> clock_comparisons(const Code& guard);
 

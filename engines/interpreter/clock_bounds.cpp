@@ -62,11 +62,7 @@ GuardBounds::GuardBounds(const bipc::ir::System& system)
   clock_free_.assign(system.code_count, nullptr);
   bipc::ir::for_each_code(system, [&](const bipc::ir::Code& code, bipc::ir::CodeUse use) {
     if (use != bipc::ir::CodeUse::Guard || code.id >= clock_free_.size()) return;
-    const bool reads_clock =
-        std::any_of(code.instrs.begin(), code.instrs.end(), [](const bipc::ir::Instr& in) {
-          return in.op == bipc::ir::Op::Load && in.scope == bipc::ir::Scope::Clock;
-        });
-    if (!reads_clock) clock_free_[code.id] = &code;
+    if (!bipc::ir::reads_clock(code)) clock_free_[code.id] = &code;
   });
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "bipc/ir/clock_guard.h"
 #include "engines/engines.h"
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/parallel_firing.h"
@@ -19,17 +20,6 @@ using detail::connector_frame;
 using detail::narrow;
 using detail::PortContext;
 using detail::wait;
-
-namespace {
-
-bool reads_clock(const bipc::ir::Code& code) {
-  for (const bipc::ir::Instr& in : code.instrs) {
-    if (in.op == bipc::ir::Op::Load && in.scope == bipc::ir::Scope::Clock) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions& functions,
                  StringPool& strings, std::ostream& out, RandomStream& random,
@@ -198,7 +188,7 @@ bool Runtime::check_invariants(const AtomScratch& s, Index atom) {
     if (!applies) continue;
     const Frame f = atom_frame(s, atom);
     bool holds = true;
-    if (reads_clock(inv.guard)) {
+    if (bipc::ir::reads_clock(inv.guard)) {
       const Interval when = s.eval.holds_when(inv.guard, f);
       atom_invariant_[atom] = atom_invariant_[atom].intersect(when);
       if (!s.on_worker) note_time_bound(atom);
