@@ -3,6 +3,7 @@
 list(APPEND BIPC_SOURCES
   ir/ir.cpp
   ir/clock_guard.cpp
+  ir/data_guard.cpp
   ir/ir_json.cpp
   ir/ir_text.cpp
   ir/ir_dot.cpp

@@ -228,7 +228,8 @@ std::string build_layout(const System& system, Layout& layout) {
     auto& internal = layout.internal_transitions.emplace_back();
     for (Index t = 0; t < type.transitions.size(); ++t) {
       const bipc::ir::Transition& transition = type.transitions[t];
-      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1};
+      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1,
+                            bipc::ir::leading_comparison(transition.guard)};
       if (!transition.from.empty()) entry.first_place = transition.from.front();
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
     }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bipc/ir/data_guard.h"
 #include "bipc/ir/ir.h"
 #include "engines/time_value.h"
 #include "engines/value.h"
@@ -42,7 +43,41 @@ struct TransitionEntry {
   Index transition = 0;
   Index first_place = bipc::ir::kNone;  // its first `from` place (kNone: it has none)
   bool more_places = false;             // whether it has other `from` places
+  /// The comparison leading its guard when it reads integer slots only (data_guard.h): tested
+  /// before the guard is interpreted, and instead of it when it is the whole guard.
+  std::optional<bipc::ir::LeadingComparison> leading;
 };
+
+/// Whether the leading comparison of a guard holds on an atom's data and parameters.
+[[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
+                                                 const Val* atom_data, const Val* atom_params) {
+  const auto read = [&](const bipc::ir::IntOperand& o) {
+    switch (o.kind) {
+      case bipc::ir::IntOperand::Kind::AtomData:
+        return atom_data[o.index].i;
+      case bipc::ir::IntOperand::Kind::AtomParam:
+        return atom_params[o.index].i;
+      case bipc::ir::IntOperand::Kind::Literal:
+        break;
+    }
+    return o.literal;
+  };
+  const std::int64_t a = read(c.left), b = read(c.right);
+  switch (c.op) {
+    case bipc::ir::Op::Eq:
+      return a == b;
+    case bipc::ir::Op::Ne:
+      return a != b;
+    case bipc::ir::Op::Lt:
+      return a < b;
+    case bipc::ir::Op::Le:
+      return a <= b;
+    case bipc::ir::Op::Gt:
+      return a > b;
+    default:
+      return a >= b;
+  }
+}
 
 struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets

@@ -277,7 +277,9 @@ Index Runtime::enabled_internal_transition(const AtomScratch& s, Index atom, con
   for (const TransitionEntry& entry : layout_.internal_transitions[type_index]) {
     const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
-    if (!from_marked(entry, tr, base) || !s.eval.holds(tr.guard, f)) continue;
+    if (!from_marked(entry, tr, base)) continue;
+    if (entry.leading && !leading_holds(*entry.leading, f.atom_data, f.atom_params)) continue;
+    if (!(entry.leading && entry.leading->whole) && !s.eval.holds(tr.guard, f)) continue;
     if (enabled != kNone) return ModelCode::kSeveralTransitions;
     enabled = t;
   }
@@ -310,9 +312,10 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
     const Index t = entry.transition;
     const bipc::ir::Transition& tr = type.transitions[t];
     if (!from_marked(entry, tr, base)) continue;
+    if (entry.leading && !leading_holds(*entry.leading, f.atom_data, f.atom_params)) continue;
     // Built in place (no copy of a returned Interval, which stalled on store forwarding).
     const Interval when = [&] {
-      if (tr.guard.empty()) return Interval::all();
+      if (tr.guard.empty() || (entry.leading && entry.leading->whole)) return Interval::all();
       return s.eval.holds_when(tr.guard, f);
     }();
     if (when.empty()) continue;

@@ -1,0 +1,141 @@
+// The leading comparison of a guard (bipc/ir/data_guard.h), tested straight from the atom's
+// slots, agrees with the interpreter: the guard is false whenever the comparison is, and equal to
+// it when it is the whole guard. Shapes where a false comparison does not decide the guard are
+// not recognised.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <sstream>
+
+#include "bipc/ir/data_guard.h"
+#include "engines/interpreter/code_eval.h"
+#include "engines/semantics/layout.h"
+
+namespace smcbip::engines {
+namespace {
+
+using bipc::ir::Code;
+using bipc::ir::Instr;
+using bipc::ir::Op;
+using bipc::ir::Scope;
+
+Instr load(Scope scope, bipc::ir::Index index, ValueKind kind = ValueKind::Int) {
+  Instr in;
+  in.op = Op::Load;
+  in.scope = scope;
+  in.kind = kind;
+  in.index = index;
+  return in;
+}
+
+Instr push_int(std::int64_t value) {
+  Instr in;
+  in.op = Op::PushInt;
+  in.kind = ValueKind::Int;
+  in.imm.i = value;
+  return in;
+}
+
+Instr op(Op code, ValueKind kind = ValueKind::Int) {
+  Instr in;
+  in.op = code;
+  in.kind = kind;
+  return in;
+}
+
+Instr data(bipc::ir::Index slot) { return load(Scope::AtomData, slot); }
+Instr param(bipc::ir::Index slot) { return load(Scope::AtomParam, slot); }
+
+/// `a && b` or `a || b`, as the compiler lays them out: the jump lands after b.
+Code joined(const Code& a, const Code& b, Op jump_op) {
+  Code out = a;
+  Instr jump = op(jump_op, ValueKind::Bool);
+  jump.index = static_cast<bipc::ir::Index>(a.instrs.size() + 1 + b.instrs.size());
+  out.instrs.push_back(jump);
+  out.instrs.insert(out.instrs.end(), b.instrs.begin(), b.instrs.end());
+  return out;
+}
+Code conjunction(const Code& a, const Code& b) { return joined(a, b, Op::JumpIfFalseKeep); }
+Code disjunction(const Code& a, const Code& b) { return joined(a, b, Op::JumpIfTrueKeep); }
+
+constexpr Op kComparisons[] = {Op::Eq, Op::Ne, Op::Lt, Op::Le, Op::Gt, Op::Ge};
+
+class LeadingComparisonTest : public ::testing::Test {
+ protected:
+  /// Over every value of data slots 0 and 1 in [-3, 3] (slot 2 and the parameter fixed), the
+  /// comparison never holds where the guard does, and equals it when it is the whole guard.
+  void expect_agreement(const Code& guard, bool whole) {
+    const auto leading = bipc::ir::leading_comparison(guard);
+    ASSERT_TRUE(leading);
+    EXPECT_EQ(leading->whole, whole);
+    for (std::int64_t a = -3; a <= 3; ++a) {
+      for (std::int64_t b = -3; b <= 3; ++b) {
+        data_[0] = make_int(a);
+        data_[1] = make_int(b);
+        Frame frame;
+        frame.atom_data = data_;
+        frame.atom_params = params_;
+        const bool test = leading_holds(*leading, data_, params_);
+        const bool holds = eval_.holds(guard, frame);
+        if (!test) {
+          EXPECT_FALSE(holds) << a << ", " << b;
+        }
+        if (whole) {
+          EXPECT_EQ(test, holds) << a << ", " << b;
+        }
+      }
+    }
+  }
+
+  bipc::ir::System system_;
+  BoundFunctions functions_;
+  std::ostringstream out_;
+  StringPool strings_;
+  CallContext call_{out_, strings_};
+  CodeEvaluator eval_{system_, functions_, call_};
+  Val data_[3] = {make_int(0), make_int(0), make_int(1)};
+  Val params_[1] = {make_int(2)};
+};
+
+TEST_F(LeadingComparisonTest, WholeComparisonsOfDataParametersAndLiterals) {
+  for (Op cmp : kComparisons) {
+    expect_agreement({{data(0), push_int(1), op(cmp)}}, true);
+    expect_agreement({{push_int(-2), data(1), op(cmp)}}, true);
+    expect_agreement({{data(0), data(1), op(cmp)}}, true);
+    expect_agreement({{param(0), data(0), op(cmp)}}, true);
+    expect_agreement({{data(1), param(0), op(cmp)}}, true);
+  }
+}
+
+TEST_F(LeadingComparisonTest, ComparisonsLeadingConjunctions) {
+  const Code rest{{data(1), push_int(0), op(Op::Gt)}};
+  const Code more{{data(2), push_int(1), op(Op::Eq)}};
+  for (Op cmp : kComparisons) {
+    const Code first{{data(0), push_int(1), op(cmp)}};
+    expect_agreement(conjunction(first, rest), false);
+    expect_agreement(conjunction(conjunction(first, rest), more), false);
+  }
+}
+
+TEST_F(LeadingComparisonTest, ShapesAFalseComparisonDoesNotDecideAreRefused) {
+  const Code first{{data(0), push_int(1), op(Op::Eq)}};
+  const Code rest{{data(1), push_int(0), op(Op::Gt)}};
+  // (first && rest) || rest: a false `first` still leaves the disjunction to decide.
+  EXPECT_FALSE(bipc::ir::leading_comparison(disjunction(conjunction(first, rest), rest)));
+  EXPECT_FALSE(bipc::ir::leading_comparison(disjunction(first, rest)));
+  // Not integer comparisons of slots the test reads.
+  Instr to_float = op(Op::IntToFloat, ValueKind::Float);
+  EXPECT_FALSE(
+      bipc::ir::leading_comparison({{data(0), to_float, load(Scope::AtomData, 1, ValueKind::Float),
+                                     op(Op::Lt, ValueKind::Float)}}));
+  EXPECT_FALSE(
+      bipc::ir::leading_comparison({{load(Scope::ConnectorData, 0), push_int(1), op(Op::Eq)}}));
+  Instr element = data(0);
+  element.arg = 1;
+  EXPECT_FALSE(bipc::ir::leading_comparison({{element, push_int(1), op(Op::Eq)}}));
+  EXPECT_FALSE(bipc::ir::leading_comparison({{data(0), push_int(1), op(Op::Add)}}));
+  EXPECT_FALSE(bipc::ir::leading_comparison({}));
+}
+
+}  // namespace
+}  // namespace smcbip::engines
