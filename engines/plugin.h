@@ -14,7 +14,7 @@
 namespace smcbip::engines {
 
 /// Bumped whenever PluginEntry or the types it hands over change incompatibly.
-inline constexpr std::uint32_t kPluginAbi = 5;  // 5: fault sites (CodeFault::site)
+inline constexpr std::uint32_t kPluginAbi = 6;  // 6: leading comparisons in Layout
 
 /// A fingerprint of the layouts a plugin and its host must share (both compute it from the
 /// headers they were built with), to refuse a plugin built against other headers.

@@ -7,6 +7,8 @@
 #include <random>
 #include <thread>
 
+#include "engines/semantics/interpreted_steps.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -114,28 +116,42 @@ bool Scheduler::restart(std::uint64_t run_index) {
   return start();
 }
 
+CompiledSteps* Scheduler::compiled_steps() {
+  if (!parts_->compiled_steps_made) {
+    // The model's generated path, else the same path interpreting the atoms' transitions.
+    parts_->compiled_steps = runtime_.code().make_steps(shared_.system, shared_.layout);
+    if (!parts_->compiled_steps) {
+      parts_->compiled_steps =
+          make_interpreted_steps(runtime_.code(), shared_.system, shared_.layout);
+    }
+    parts_->compiled_steps_made = true;
+  }
+  return parts_->compiled_steps.get();
+}
+
 void Scheduler::remember_discrete_state() {
   const RunState& state = runtime_.state();
-  data_before_.assign(state.data.begin(), state.data.end());
-  marking_before_.assign(state.marking.begin(), state.marking.end());
-  resume_before_.assign(state.resume_pending.begin(), state.resume_pending.end());
+  parts_->data_before.assign(state.data.begin(), state.data.end());
+  parts_->marking_before.assign(state.marking.begin(), state.marking.end());
+  parts_->resume_before.assign(state.resume_pending.begin(), state.resume_pending.end());
 }
 
 bool Scheduler::discrete_state_kept(const RunState& state) const {
   // Bytes, as the explorer keys states: equal strings have equal ids.
-  return state.marking == marking_before_ && state.resume_pending == resume_before_ &&
-         std::equal(state.data.begin(), state.data.end(), data_before_.begin(), data_before_.end(),
+  return state.marking == parts_->marking_before && state.resume_pending == parts_->resume_before &&
+         std::equal(state.data.begin(), state.data.end(), parts_->data_before.begin(),
+                    parts_->data_before.end(),
                     [](Val a, Val b) { return std::memcmp(&a, &b, sizeof(Val)) == 0; });
 }
 
 bool Scheduler::absorbing(bool& failed) {
-  absorbing_probe_ = runtime_.state();
+  parts_->absorbing_probe = runtime_.state();
   const std::size_t count = runtime_.item_count();
-  const TimeValue now = absorbing_probe_.now;
+  const TimeValue now = parts_->absorbing_probe.now;
   bool kept = true;
   for (std::size_t k = 0; k < count && kept; ++k) {
     // Each item from the probed state: restore recomputes the offers that execute consumed.
-    if (k > 0 && (!runtime_.restore(absorbing_probe_) || !runtime_.compute_items())) {
+    if (k > 0 && (!runtime_.restore(parts_->absorbing_probe) || !runtime_.compute_items())) {
       kept = false;
       break;
     }
@@ -143,7 +159,7 @@ bool Scheduler::absorbing(bool& failed) {
     kept = runtime_.execute(runtime_.item(k), now) && runtime_.resume_atoms(now) &&
            discrete_state_kept(runtime_.state());
   }
-  failed = !runtime_.restore(absorbing_probe_) || !runtime_.compute_items();
+  failed = !runtime_.restore(parts_->absorbing_probe) || !runtime_.compute_items();
   if (failed) record_error();
   return kept && !failed;
 }

@@ -95,7 +95,8 @@ class Simulation {
       line(picked_ ? std::string("following a recorded trace")
                    : "random scheduling based on seed=" + std::to_string(shared_.seed));
     }
-    start_ = std::chrono::steady_clock::now();
+    // Only real time reads the platform clock (a system call's worth of time per run).
+    if (options_.real_time) start_ = std::chrono::steady_clock::now();
     if (!scheduler_.start()) return error();
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
@@ -140,11 +141,10 @@ class Simulation {
   /// engine in simulated time without a text trace or a prompt.
   CompiledSteps* compiled_steps() {
     if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
-        picked_ || verbose_ || options_.disable_maximal_progress || shared_.absorbing_checks) {
+        picked_ || verbose_ || options_.disable_maximal_progress) {
       return nullptr;
     }
-    compiled_ = runtime_.code().make_steps(shared_.system, shared_.layout);
-    return compiled_.get();
+    return scheduler_.compiled_steps();
   }
 
   /// The run on the compiled step path; nullopt when it leaves the path (nothing observed of
@@ -156,11 +156,18 @@ class Simulation {
       return std::nullopt;
     }
     StepInfo info;
+    const bool absorbing_checks = shared_.absorbing_checks;
     for (;;) {
+      if (absorbing_checks) scheduler_.remember_discrete_state();
       switch (steps.step(options_.limit && steps_ >= *options_.limit, info)) {
         case CompiledSteps::Outcome::Fired:
           info.step = ++steps_;
           if (!observe(info)) return stopped();
+          // A step that kept the places and data may have reached an absorbing state: the
+          // scheduler, which tells, replays the run and goes on from there.
+          if (absorbing_checks && scheduler_.discrete_state_kept(runtime_.state())) {
+            return std::nullopt;
+          }
           continue;
         case CompiledSteps::Outcome::Deadlock:
           return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
@@ -297,7 +304,6 @@ class Simulation {
   bool picked_;
   Runtime& runtime_;
   std::uint64_t run_index_;
-  std::unique_ptr<CompiledSteps> compiled_;
   std::chrono::steady_clock::time_point start_;
   RunResult error_result_;
 };

@@ -121,6 +121,14 @@ struct RunParts {
   DatePlanner planner;
   std::vector<TimeValue> dates;  // the stochastic race's planned dates, per item
   std::string planner_problem;   // reused: planning a date may fail with a message
+  /// absorbing_checks: the places, data and pending resumes before a step, and the state whose
+  /// items Scheduler::absorbing() tries (reused: a run would otherwise allocate them afresh).
+  std::vector<Val> data_before;
+  std::vector<std::uint8_t> marking_before, resume_before;
+  RunState absorbing_probe;
+  /// The model's compiled step path over this runtime (made once; null when it has none).
+  std::unique_ptr<CompiledSteps> compiled_steps;
+  bool compiled_steps_made = false;
 };
 
 /// One run's random stream, semantics and choice of items: the reference engine's random race
@@ -164,6 +172,13 @@ class Scheduler {
   /// The stochastic race's date planner (a compiled step path draws with it, keeping its own
   /// plans).
   DatePlanner& planner() { return planner_; }
+  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
+  /// changed them.
+  void remember_discrete_state();
+  bool discrete_state_kept(const RunState& state) const;
+  /// The model's compiled step path over runtime(), made by the first run that asks and kept
+  /// by the next ones; null when the model has none.
+  CompiledSteps* compiled_steps();
 
  private:
   /// An Error end with the runtime's error.
@@ -178,10 +193,6 @@ class Scheduler {
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> race(bool& failed);
   [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>>
   earliest_in_window();
-  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
-  /// changed them.
-  void remember_discrete_state();
-  bool discrete_state_kept(const RunState& state) const;
   /// Whether every item of the current state (its items computed) keeps its places, data and
   /// pending resumes; the runtime is left in that state, its items computed again (`failed`
   /// when that fails, with the runtime's error).
@@ -200,12 +211,8 @@ class Scheduler {
   std::uint64_t steps_ = 0;
   ModelError error_;
   Decision decision_;
-  // absorbing_checks: the last step changed no place, data or pending resume, and the state
-  // before it.
+  // absorbing_checks: the last step changed no place, data or pending resume.
   bool idle_step_ = false;
-  std::vector<Val> data_before_;
-  std::vector<std::uint8_t> marking_before_, resume_before_;
-  RunState absorbing_probe_;  // the state whose items absorbing() tries
 };
 
 // The per-step functions are inlined into each scheduler loop (Simulator's, Execution's), as they

@@ -253,6 +253,10 @@ std::string build_layout(const System& system, Layout& layout) {
     for (const bipc::ir::Value& v : atom.params) layout.params.push_back(to_val(v, nullptr));
     layout.atom_names.push_back(system.root_name + "." + atom.path);
   }
+  layout.initial_order.resize(system.atoms.size());
+  for (Index a = 0; a < system.atoms.size(); ++a) layout.initial_order[a] = a;
+  std::sort(layout.initial_order.begin(), layout.initial_order.end(),
+            [&](Index x, Index y) { return layout.atom_names[x] < layout.atom_names[y]; });
   for (Index k = 0; k < system.connectors.size(); ++k) {
     const bipc::ir::ConnectorInstance& connector = system.connectors[k];
     const bipc::ir::ConnectorType& type = system.connector_types[connector.type];

@@ -108,6 +108,9 @@ struct Layout {
   std::vector<std::vector<Index>> rules_by_low;
   std::vector<Index> ruled_compounds;  // the compounds with priority rules, increasing
   std::vector<std::string> atom_names, connector_names;  // full names "ROOT.x"
+  /// Atoms in the order they initialise: by name, level by level, as the reference engine's
+  /// maps order them.
+  std::vector<Index> initial_order;
   /// No atom has a clock and no port is extern: every guard, invariant and resume condition
   /// then holds at all dates or at none, so every enabled item's window is the waiting window.
   bool untimed = false;

@@ -8,6 +8,7 @@
 
 #include "bipc/ir/clock_guard.h"
 #include "engines/engines.h"
+#include "engines/semantics/atom_steps.h"
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/parallel_firing.h"
 
@@ -145,12 +146,7 @@ bool Runtime::initialize() {
         }
       }
     }
-    // Components initialise in name order, level by level, as the reference engine's maps do.
-    std::vector<Index> order(system_.atoms.size());
-    for (Index a = 0; a < order.size(); ++a) order[a] = a;
-    std::sort(order.begin(), order.end(),
-              [&](Index x, Index y) { return layout_.atom_names[x] < layout_.atom_names[y]; });
-    for (Index a : order) {
+    for (Index a : layout_.initial_order) {
       const AtomType& type = system_.atom_types[system_.atoms[a].type];
       for (Index p : type.initial_places) state_.marking[layout_.atom_places[a] + p] = 1;
       eval_.execute(type.initial_action, atom_frame(a));
@@ -220,17 +216,11 @@ bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition
                       ")",
                   where(t.loc));
   };
-  if (const Index type_index = system_.atoms[atom].type; compiled_type_[type_index]) {
-    if (!s.eval.atom_fire(type_index, transition, &state_.marking[base], f)) {
-      return not_safe();
-    }
-  } else {
-    for (Index p : t.from) state_.marking[base + p] = 0;
-    for (Index p : t.to) {
-      if (state_.marking[base + p]) return not_safe();
-      state_.marking[base + p] = 1;
-    }
-    s.eval.execute(t.action, f);
+  const Index type_index = system_.atoms[atom].type;
+  std::uint8_t* marking = &state_.marking[base];
+  if (compiled_type_[type_index] ? !s.eval.atom_fire(type_index, transition, marking, f)
+                                 : !interpreted_fire(t, marking, f, s.eval)) {
+    return not_safe();
   }
   if (t.resume) {
     state_.resume_pending[atom] = 1;
@@ -239,17 +229,6 @@ bool Runtime::fire_transition(const AtomScratch& s, Index atom, Index transition
   }
   // An atom without invariants keeps `all` (its time bound is noted where its resume changes).
   return type.invariants.empty() || check_invariants(s, atom);
-}
-
-inline bool Runtime::from_marked(const TransitionEntry& entry,
-                                 const bipc::ir::Transition& transition, std::size_t base) const {
-  if (entry.first_place == kNone) return true;
-  if (!state_.marking[base + entry.first_place]) return false;
-  if (!entry.more_places) return true;
-  for (Index p : transition.from) {
-    if (!state_.marking[base + p]) return false;
-  }
-  return true;
 }
 
 bool Runtime::run_internal_transitions(const AtomScratch& s, Index atom) {
@@ -268,22 +247,9 @@ bool Runtime::run_internal_transitions(const AtomScratch& s, Index atom) {
 
 Index Runtime::enabled_internal_transition(const AtomScratch& s, Index atom, const Frame& f) {
   const Index type_index = system_.atoms[atom].type;
-  const std::size_t base = layout_.atom_places[atom];
-  if (compiled_type_[type_index]) {
-    return s.eval.atom_internal(type_index, &state_.marking[base], f);
-  }
-  const AtomType& type = system_.atom_types[type_index];
-  Index enabled = kNone;
-  for (const TransitionEntry& entry : layout_.internal_transitions[type_index]) {
-    const Index t = entry.transition;
-    const bipc::ir::Transition& tr = type.transitions[t];
-    if (!from_marked(entry, tr, base)) continue;
-    if (entry.leading && !leading_holds(*entry.leading, f.atom_data, f.atom_params)) continue;
-    if (!(entry.leading && entry.leading->whole) && !s.eval.holds(tr.guard, f)) continue;
-    if (enabled != kNone) return ModelCode::kSeveralTransitions;
-    enabled = t;
-  }
-  return enabled;
+  const std::uint8_t* marking = &state_.marking[layout_.atom_places[atom]];
+  if (compiled_type_[type_index]) return s.eval.atom_internal(type_index, marking, f);
+  return interpreted_internal(system_, layout_, type_index, marking, f, s.eval);
 }
 
 bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
@@ -293,35 +259,11 @@ bool Runtime::update_atom(const AtomScratch& s, Index atom, const Frame& f) {
   if (!s.on_worker) cache_.touch_atom(atom);  // parallel firing notes atoms after the join
   for (std::size_t p = 0; p < type.ports.size(); ++p) values[p].reset();
   const Index type_index = system_.atoms[atom].type;
-  if (compiled_type_[type_index]) {
-    const Index port = s.eval.atom_offers(type_index, &state_.marking[base], f, values);
-    if (port != kNone) return non_deterministic_offers(s, atom, port);
-    return type.priorities.empty() || apply_atom_priorities(s, atom, f);
-  }
-  // A state machine looks only at the transitions from its one marked place: the same ones,
-  // in the same order, that are enabled by the marking.
-  const std::vector<std::vector<TransitionEntry>>& from_place =
-      layout_.labelled_from_place[type_index];
-  const std::vector<TransitionEntry>* entries = &layout_.labelled_transitions[type_index];
-  if (!from_place.empty()) {
-    std::size_t marked = 0;
-    while (marked + 1 < from_place.size() && !state_.marking[base + marked]) ++marked;
-    entries = &from_place[marked];
-  }
-  for (const TransitionEntry& entry : *entries) {
-    const Index t = entry.transition;
-    const bipc::ir::Transition& tr = type.transitions[t];
-    if (!from_marked(entry, tr, base)) continue;
-    if (entry.leading && !leading_holds(*entry.leading, f.atom_data, f.atom_params)) continue;
-    // Built in place (no copy of a returned Interval, which stalled on store forwarding).
-    const Interval when = [&] {
-      if (tr.guard.empty() || (entry.leading && entry.leading->whole)) return Interval::all();
-      return s.eval.holds_when(tr.guard, f);
-    }();
-    if (when.empty()) continue;
-    if (values[tr.port]) return non_deterministic_offers(s, atom, tr.port);
-    values[tr.port] = AtomPortValue{t, {when, tr.urgency}};
-  }
+  const std::uint8_t* marking = &state_.marking[base];
+  const Index port = compiled_type_[type_index] ? s.eval.atom_offers(type_index, marking, f, values)
+                                                : interpreted_offers(system_, layout_, type_index,
+                                                                     marking, f, s.eval, values);
+  if (port != kNone) return non_deterministic_offers(s, atom, port);
   return type.priorities.empty() || apply_atom_priorities(s, atom, f);
 }
 

@@ -257,10 +257,6 @@ class Runtime {
   Index enabled_internal_transition(const AtomScratch& s, Index atom, const Frame& f);
   bool fire_transition(const AtomScratch& s, Index atom, Index transition, Index port_label,
                        const Frame& f);
-  /// Whether every `from` place of the transition is marked (`base`: the atom's first place).
-  [[gnu::always_inline]] inline bool from_marked(const TransitionEntry& entry,
-                                                 const bipc::ir::Transition& transition,
-                                                 std::size_t base) const;
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
   bool check_invariants(const AtomScratch& s, Index atom);
   bool check_atom_priority_cycle(const AtomScratch& s, Index atom);

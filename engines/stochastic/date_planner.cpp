@@ -108,6 +108,7 @@ void DatePlanner::key_of(const Runtime& runtime, const Item& item) {
 }
 
 void DatePlanner::index_connectors(const Runtime& runtime) {
+  indexed_ = true;
   port_plans_.resize(stochastic_ports_.size());
   connector_plans_.resize(system_.connectors.size());
   connector_stochastic_.resize(system_.connectors.size());
@@ -151,7 +152,7 @@ DatePlanner::Plan& DatePlanner::plan_of(const Runtime& runtime, const Item& item
 }
 
 bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::string& error) {
-  if (connector_plans_.empty()) index_connectors(runtime);
+  if (!indexed_) index_connectors(runtime);
   dates.clear();
   ++generation_;
   for (const Item& item : runtime.items()) {

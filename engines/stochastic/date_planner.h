@@ -126,7 +126,7 @@ class DatePlanner {
   /// Identifies an interaction item across steps: its connector and defined interaction and the
   /// atom ports it fires; written to key_.
   void key_of(const Runtime& runtime, const Item& item);
-  /// Sizes the tables of plans kept without a key (port_plans_, connector_plans_).
+  /// Sizes the tables of plans kept without a key (port_plans_, connector_plans_), once.
   void index_connectors(const Runtime& runtime);
   /// The plan of the item (created empty when new).
   Plan& plan_of(const Runtime& runtime, const Item& item);
@@ -157,6 +157,7 @@ class DatePlanner {
   // Likewise, the @stochastic atom port of each such interaction.
   std::vector<std::vector<std::optional<std::pair<Index, Index>>>> connector_stochastic_;
   Plans plans_;
+  bool indexed_ = false;  // index_connectors() has sized the tables
   std::uint64_t generation_ =
       1;  // from 2 on at the first plan(): new entries (seen 0) are not kept
   Key key_;

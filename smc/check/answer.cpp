@@ -201,7 +201,8 @@ bool Answer::sample(bool satisfied, double value) {
     case Method::Pestim:
     case Method::Band: {
       // The same number of runs: Hoeffding's bound for one point is DKW's for all at once.
-      const std::uint64_t n = chernoff_samples(options_.delta, options_.alpha);
+      if (!chernoff_n_) chernoff_n_ = chernoff_samples(options_.delta, options_.alpha);
+      const std::uint64_t n = *chernoff_n_;
       successes_ += satisfied;
       r_->estimate = ratio(successes_, r_->samples);
       r_->ci = {std::max(0.0, r_->estimate - options_.delta),

@@ -58,6 +58,7 @@ class Answer {
   QueryResult* r_;
   std::optional<Sprt> sprt_;
   std::optional<SamplingPlan> plan_;
+  std::optional<std::uint64_t> chernoff_n_;  // the runs Pestim and Band make, once computed
   std::optional<SequentialInterval> interval_;
   std::optional<BayesianInterval> bayes_;
   std::uint64_t successes_ = 0;
