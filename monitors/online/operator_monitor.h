@@ -16,6 +16,18 @@
 
 namespace smcbip::monitors {
 
+/// Reads the programs' loads from a StateView, as OnlineMonitor reads names.
+class ViewReader {
+ public:
+  explicit ViewReader(const StateView& state) : state_(state) {}
+  double load(online::StateProgram::Code, const online::StateProgram::Op& op) const {
+    return state_.value(*op.expr);
+  }
+
+ private:
+  const StateView& state_;
+};
+
 class OperatorMonitor {
  public:
   /// Whether `formula` has the shape this monitor takes: negations of one F, G, U or R
@@ -30,7 +42,11 @@ class OperatorMonitor {
   /// Reads the next step at `time` (ticks), as OnlineMonitor::step; `read` gives the values
   /// of the programs' loads in its state (StateProgram::holds).
   template <class Reader>
-  Verdict step(const Reader& read, online::Tick time);
+  Verdict step_with(const Reader& read, online::Tick time);
+  /// The same, reading a StateView (names as OnlineMonitor reads them).
+  Verdict step(const StateView& state, online::Tick time) {
+    return step_with(ViewReader(state), time);
+  }
   /// As OnlineMonitor::end.
   Verdict end(RunEnd how);
   Verdict verdict() const { return verdict_; }
@@ -87,7 +103,7 @@ class OperatorMonitor {
 };
 
 template <class Reader>
-Verdict OperatorMonitor::step(const Reader& read, online::Tick time) {
+Verdict OperatorMonitor::step_with(const Reader& read, online::Tick time) {
   // Inline, the most frequent step: at a later date, within the bounds, after a step that
   // neither held the goal nor failed the hold.
   const online::Tick t = 2 * (time - origin_);

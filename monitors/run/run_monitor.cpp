@@ -115,7 +115,7 @@ double RunMonitor::first_hit_ms() const {
 bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView& state) {
   if (fast_) {
     if (&state.system() != bound_) bind(state.system());
-    return fast_->step(EngineReader(state), step.time) == Verdict::Undecided;
+    return fast_->step_with(EngineReader(state), step.time) == Verdict::Undecided;
   }
   return general_->step(EngineState(step, state), step.time) == Verdict::Undecided;
 }
