@@ -111,18 +111,6 @@ bool OperatorMonitor::begin(Tick time) {
   return true;
 }
 
-Verdict OperatorMonitor::finish_step(bool hold, bool goal) {
-  hold_now_ = hold;
-  goal_now_ = goal;
-  ++steps_;
-  if (progress_.found) {
-    decide(true);
-  } else if (!progress_.alive || last_.t > high_) {
-    decide(false);
-  }
-  return verdict_;
-}
-
 void OperatorMonitor::span(Progress& p, Pos from, Pos to, bool hold, bool goal) const {
   if (p.found || !p.alive) return;
   if (goal && from <= end_) p.first_hit = std::min(p.first_hit, from);

@@ -76,7 +76,13 @@ class OperatorMonitor {
   /// ended before it); it judges the positions of the step before.
   bool begin(online::Tick time);
   /// The new step's operands (in the operator's own reading: see the .cpp); decides.
-  Verdict finish_step(bool hold, bool goal);
+  Verdict finish_step(bool hold, bool goal) {
+    hold_now_ = hold;
+    goal_now_ = goal;
+    ++steps_;
+    if (progress_.found || !progress_.alive || last_.t > high_) decide(progress_.found);
+    return verdict_;
+  }
   /// The positions from..to hold `hold` and `goal`.
   void span(Progress& p, online::Pos from, online::Pos to, bool hold, bool goal) const;
   void finish_observation(online::Pos end);

@@ -63,6 +63,11 @@ StateProgram::StateProgram(const Formula& f, bool negated, const Bindings& bindi
   for (Code junction : {Code::And, Code::Or}) {
     if (joins_comparisons(ops_.size(), junction)) form_ = junction;
   }
+  if (form_ != Code::Number) {
+    for (const Op& op : ops_) {
+      if (op.code == Code::Compare) compares_.push_back(op);
+    }
+  }
 }
 
 bool StateProgram::joins_comparisons(std::size_t n, Code junction) const {
@@ -138,10 +143,20 @@ void StateProgram::formula(const Formula& f, bool negated) {
     case K::False:
       push({Code::Number, 0, 0, (f.kind == K::True) != negated ? 1.0 : 0.0});
       return;
-    case K::Atom:
+    case K::Atom: {
       expression(*f.atom);
-      push({negated ? Code::Not : Code::Truth});
+      // A comparison gives 1 or 0 already; != and == negate exactly (NaN included).
+      Op& last = ops_.back();
+      const Code code = last.code == Code::Compare ? last.compare : last.code;
+      const bool truth = code >= Code::Less && code <= Code::NotEqual;
+      if (negated && last.code == Code::Compare &&
+          (code == Code::Equal || code == Code::NotEqual)) {
+        last.compare = code == Code::Equal ? Code::NotEqual : Code::Equal;
+      } else if (negated || !truth) {
+        push({negated ? Code::Not : Code::Truth});
+      }
       return;
+    }
     case K::Not:
       operand(0, !negated);
       return;

@@ -73,16 +73,18 @@ class StateProgram {
   /// Binds every Data load to its kind: `kind_of(atom, slot)` gives it.
   template <class KindOf>
   void bind_data(const KindOf& kind_of) {
-    for (Op& op : ops_) {
-      Code& code = op.code == Code::Compare ? op.load : op.code;
-      if (code != Code::Data && code != Code::Int && code != Code::Bool && code != Code::Float) {
-        continue;
-      }
-      const DataKind kind = kind_of(op.atom, op.index);
-      code = kind == DataKind::Bool    ? Code::Bool
-             : kind == DataKind::Float ? Code::Float
-                                       : Code::Int;
+    for (std::vector<Op>* ops : {&ops_, &compares_}) {
+      for (Op& op : *ops) bind(op, kind_of);
     }
+  }
+  template <class KindOf>
+  static void bind(Op& op, const KindOf& kind_of) {
+    Code& code = op.code == Code::Compare ? op.load : op.code;
+    if (code != Code::Data && code != Code::Int && code != Code::Bool && code != Code::Float) {
+      return;
+    }
+    const DataKind kind = kind_of(op.atom, op.index);
+    code = kind == DataKind::Bool ? Code::Bool : kind == DataKind::Float ? Code::Float : Code::Int;
   }
 
   /// The formula's truth in a state. `read.load(code, op)` gives the value of the load `code`
@@ -108,6 +110,7 @@ class StateProgram {
   }
 
   std::vector<Op> ops_;
+  std::vector<Op> compares_;  // And, Or: the comparisons of ops_, in order
   /// And: the program is comparisons joined by &&, read until one fails (none can throw);
   /// Or: by ||, likewise; Number: any other program.
   Code form_ = Code::Number;
@@ -118,14 +121,14 @@ class StateProgram {
 template <class Reader>
 bool StateProgram::holds(const Reader& read, bool initial) const {
   if (form_ == Code::And) {
-    for (const Op& op : ops_) {
-      if (op.code == Code::Compare && !compare(read, op)) return false;
+    for (const Op& op : compares_) {
+      if (!compare(read, op)) return false;
     }
     return true;
   }
   if (form_ == Code::Or) {
-    for (const Op& op : ops_) {
-      if (op.code == Code::Compare && compare(read, op)) return true;
+    for (const Op& op : compares_) {
+      if (compare(read, op)) return true;
     }
     return false;
   }

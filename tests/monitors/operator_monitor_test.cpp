@@ -81,8 +81,10 @@ class Random {
                                           "min(x, 3) == x && q",
                                           "x / 2 > 1",
                                           "!(p && x > 1)",
-                                          "p && q && x != 0 || !p && x == 4"};
-    auto state = [&] { return std::string("(") + kStates[pick(18)] + ")"; };
+                                          "p && q && x != 0 || !p && x == 4",
+                                          "x >= 1 && x != 3 && p == 1",
+                                          "x == 0 || x == k"};
+    auto state = [&] { return std::string("(") + kStates[pick(20)] + ")"; };
     std::string negation = pick(3) == 0 ? "!" : pick(8) == 0 ? "!!" : "";
     std::string formula;
     switch (pick(4)) {
