@@ -6,6 +6,7 @@
 #include "monitors/online/extremum.h"
 #include "monitors/online/horizon.h"
 #include "monitors/online/online_monitor.h"
+#include "monitors/online/operator_monitor.h"
 #include "monitors/parse/property_parser.h"
 #include "monitors/property/ast.h"
 #include "monitors/resolve/resolve_names.h"

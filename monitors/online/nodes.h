@@ -25,6 +25,8 @@ class Node {
  public:
   virtual ~Node() = default;
   virtual std::unique_ptr<Node> clone() const = 0;
+  /// Becomes a copy of `blank`, a node of the same type, without allocating.
+  virtual void restart(const Node& blank) = 0;
   virtual void advance(Signals& s) = 0;
   /// The oldest segment it may still ask about (X and step bounds), or -1.
   virtual std::int64_t segment_needed(const Signals&) const { return -1; }
@@ -46,6 +48,7 @@ struct Operand {
 class Leaf final : public Node {
  public:
   std::unique_ptr<Node> clone() const override { return std::make_unique<Leaf>(*this); }
+  void restart(const Node& blank) override { *this = static_cast<const Leaf&>(blank); }
   void advance(Signals&) override {}
 };
 
@@ -56,6 +59,7 @@ class Junction final : public Node {
   Junction(std::size_t self, Operand x, Operand y, bool disjunction)
       : self_(self), x_(x), y_(y), decisive_(disjunction) {}
   std::unique_ptr<Node> clone() const override { return std::make_unique<Junction>(*this); }
+  void restart(const Node& blank) override { *this = static_cast<const Junction&>(blank); }
   void advance(Signals& s) override;
 
  private:
@@ -70,6 +74,7 @@ class Next final : public Node {
  public:
   Next(std::size_t self, Operand phi) : self_(self), phi_(phi) {}
   std::unique_ptr<Node> clone() const override { return std::make_unique<Next>(*this); }
+  void restart(const Node& blank) override { *this = static_cast<const Next&>(blank); }
   void advance(Signals& s) override;
   std::int64_t segment_needed(const Signals&) const override { return segment_; }
 
@@ -135,6 +140,7 @@ class Finally final : public Bounded {
   Finally(std::size_t self, Operand phi, Window window, bool dual)
       : Bounded(self, window, dual), phi_(phi) {}
   std::unique_ptr<Node> clone() const override { return std::make_unique<Finally>(*this); }
+  void restart(const Node& blank) override { *this = static_cast<const Finally&>(blank); }
   void advance(Signals& s) override;
   Pos first_hit() const override { return first_hit_; }
 
@@ -151,6 +157,7 @@ class Until final : public Bounded {
   Until(std::size_t self, Operand hold, Operand goal, Window window, bool dual)
       : Bounded(self, window, dual), hold_(hold), goal_(goal) {}
   std::unique_ptr<Node> clone() const override { return std::make_unique<Until>(*this); }
+  void restart(const Node& blank) override { *this = static_cast<const Until&>(blank); }
   void advance(Signals& s) override;
 
  private:

@@ -383,8 +383,18 @@ OnlineMonitor& OnlineMonitor::operator=(const OnlineMonitor& other) {
 OnlineMonitor::~OnlineMonitor() = default;
 
 void OnlineMonitor::reset() {
-  nodes_ = clone_all(blank_nodes_);
-  signals_ = blank_signals_;
+  // After the first run, the nodes and signals are restored in place: a run allocates only
+  // when its signals outgrow every earlier run's.
+  if (nodes_.size() == blank_nodes_.size() && signals_.of.size() == blank_signals_.of.size()) {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i]->restart(*blank_nodes_[i]);
+    for (std::size_t i = 0; i < signals_.of.size(); ++i) {
+      signals_.of[i].restart(blank_signals_.of[i]);
+    }
+    signals_.segments.restart();
+  } else {
+    nodes_ = clone_all(blank_nodes_);
+    signals_ = blank_signals_;
+  }
   pending_.assign(leaves_.size(), Pending{});
   started_ = false;
   steps_ = 0;

@@ -63,6 +63,8 @@ class Ring {
     items_[tail_++ & mask_] = item;
   }
   void pop_front() { ++head_; }
+  /// Empties the ring, keeping its storage.
+  void clear() { head_ = tail_ = 0; }
 
  private:
   void grow() {
@@ -126,6 +128,16 @@ class Signal {
 
   std::size_t size() const { return runs_.size(); }
 
+  /// Becomes a copy of `blank`, a signal of the same readers that holds no run yet, keeping
+  /// its storage.
+  void restart(const Signal& blank) {
+    runs_.clear();
+    base_ = blank.base_;
+    passed_ = blank.passed_;
+    cursors_ = blank.cursors_;
+    frontier_ = blank.frontier_;
+  }
+
  private:
   Ring<Run> runs_;
   std::size_t base_ = 0;    // the index of runs_[0] since the first run
@@ -146,6 +158,12 @@ class Segments {
     unknown_tail_ = unknown;
   }
   bool unknown_tail() const { return unknown_tail_; }
+  /// No segment yet, keeping the storage.
+  void restart() {
+    starts_.clear();
+    base_ = 0;
+    finished_ = unknown_tail_ = false;
+  }
 
   std::int64_t count() const { return base_ + static_cast<std::int64_t>(starts_.size()); }
   /// Whether segment `i` is the last and lasts forever.

@@ -53,9 +53,59 @@ bool EngineState::fired(const Expr& fired) const {
          step_.atom == r.atom && step_.port == r.index;
 }
 
+namespace {
+
+/// The values OperatorMonitor's programs load, read straight from the engine's state.
+class EngineReader {
+ public:
+  explicit EngineReader(const engines::StateView& state) : state_(state) {}
+  double load(online::StateProgram::Code code, const online::StateProgram::Op& op) const {
+    using Code = online::StateProgram::Code;
+    switch (code) {
+      case Code::Int:
+        return static_cast<double>(state_.data(op.atom, op.index).i);
+      case Code::Bool:
+        return state_.data(op.atom, op.index).b ? 1 : 0;
+      case Code::Float:
+        return state_.data(op.atom, op.index).f;
+      case Code::Place:
+        return state_.marked(op.atom, op.index) ? 1 : 0;
+      default:  // as EngineState: nothing else to read from a state
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+
+ private:
+  const engines::StateView& state_;
+};
+
+}  // namespace
+
+RunMonitor::RunMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings,
+                       const Bound& run, Monitoring monitoring) {
+  if (monitoring == Monitoring::Fastest && OperatorMonitor::accepts(formula)) {
+    fast_.emplace(formula, scale, bindings, run);
+  } else {
+    general_.emplace(formula, scale, bindings, run);
+  }
+}
+
+void RunMonitor::bind(const bipc::ir::System& system) {
+  const auto kind_of = [&](std::uint32_t atom, std::uint32_t slot) {
+    using Kind = online::StateProgram::DataKind;
+    const auto kind = system.atom_types[system.atoms[atom].type].data[slot].type.kind;
+    return kind == bipc::ir::ValueKind::Bool    ? Kind::Bool
+           : kind == bipc::ir::ValueKind::Float ? Kind::Float
+                                                : Kind::Int;
+  };
+  fast_->hold_program().bind_data(kind_of);
+  fast_->goal_program().bind_data(kind_of);
+  bound_ = &system;
+}
+
 double RunMonitor::first_hit_ms() const {
-  const online::Pos hit = monitor_.first_hit_for_sure();
-  if (monitor_.verdict() != Verdict::True || hit == online::kForever) {
+  const online::Pos hit = fast_ ? fast_->first_hit_for_sure() : general_->first_hit_for_sure();
+  if (verdict() != Verdict::True || hit == online::kForever) {
     return std::numeric_limits<double>::quiet_NaN();
   }
   // Positions count half ticks of nanoseconds.
@@ -63,12 +113,20 @@ double RunMonitor::first_hit_ms() const {
 }
 
 bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView& state) {
-  return monitor_.step(EngineState(step, state), step.time) == Verdict::Undecided;
+  if (fast_) {
+    if (&state.system() != bound_) bind(state.system());
+    return fast_->step_with(EngineReader(state), step.time) == Verdict::Undecided;
+  }
+  return general_->step(EngineState(step, state), step.time) == Verdict::Undecided;
 }
 
 void RunMonitor::finish(engines::RunEnd end, int, const std::string&) {
   // A run stopped once the verdict was known needs no end; any other stop cuts it short.
-  monitor_.end(monitor_end(end));
+  if (fast_) {
+    fast_->end(monitor_end(end));
+  } else {
+    general_->end(monitor_end(end));
+  }
 }
 
 }  // namespace smcbip::monitors

@@ -2,12 +2,15 @@
 // the names resolve_names bound to the model, and stops the run once the verdict is known.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "engines/run_observer.h"
 #include "monitors/online/critical_bound.h"
 #include "monitors/online/extremum.h"
 #include "monitors/online/online_monitor.h"
+#include "monitors/online/operator_monitor.h"
 
 namespace smcbip::monitors {
 
@@ -29,6 +32,10 @@ class EngineState final : public StateView {
   const engines::StateView& state_;
 };
 
+/// Which monitor judges a RunMonitor's runs: the fastest that takes its formula
+/// (OperatorMonitor when it does), or OnlineMonitor always (to cross-check the two).
+enum class Monitoring : std::uint8_t { Fastest, General };
+
 /// Judges runs against a formula resolved against their model (resolve_names): give it to
 /// engines::Simulator::run as the observer; reset() before each run.
 class RunMonitor final : public engines::RunObserver {
@@ -36,21 +43,35 @@ class RunMonitor final : public engines::RunObserver {
   /// `scale`: nanosecond ticks (the engines' time) per unit of the model's clocks and per
   /// second. `run`: the query's run bound, if any.
   RunMonitor(const Formula& formula, const TimeScale& scale, const Bindings& bindings,
-             const Bound& run = {})
-      : monitor_(formula, scale, bindings, run) {}
+             const Bound& run = {}, Monitoring monitoring = Monitoring::Fastest);
 
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override;
   void finish(engines::RunEnd end, int code, const std::string& message) override;
 
-  Verdict verdict() const { return monitor_.verdict(); }
+  Verdict verdict() const { return fast_ ? fast_->verdict() : general_->verdict(); }
   /// Whether an absorbing end decides the formula (engines::SimulateOptions::stop_absorbing).
-  bool decided_by_absorbing() const { return monitor_.decided_by_absorbing(); }
+  bool decided_by_absorbing() const {
+    return fast_ ? fast_->decided_by_absorbing() : general_->decided_by_absorbing();
+  }
   /// For F phi: the time (ms) at which phi first held, once the verdict is true; NaN otherwise.
   double first_hit_ms() const;
-  void reset() { monitor_.reset(); }
+  void reset() {
+    if (fast_) {
+      fast_->reset();
+    } else {
+      general_->reset();
+    }
+  }
+  /// Whether the formula is judged by OperatorMonitor.
+  bool fast() const { return fast_.has_value(); }
 
  private:
-  OnlineMonitor monitor_;
+  /// Binds the data loads of the fast monitor's programs to the kinds `system` declares.
+  void bind(const bipc::ir::System& system);
+
+  std::optional<OperatorMonitor> fast_;
+  std::optional<OnlineMonitor> general_;     // when fast_ is not
+  const bipc::ir::System* bound_ = nullptr;  // the system fast_'s programs are bound to
 };
 
 /// Judges runs against F[0,t] phi or G[0,t] phi for every value of the parameter t at once

@@ -349,6 +349,31 @@ TEST(OnlineMonitor, AgreesWithTheReferenceOnRandomFormulasAndTraces) {
   EXPECT_GT(decided, 15000);  // the cases are not mostly undecided
 }
 
+TEST(OnlineMonitor, AMonitorResetJudgesAsANewOne) {
+  // reset() restores the nodes and signals in place: one monitor reused over runs, decided
+  // early, cut or deadlocked, must judge each as a monitor made for it does.
+  FormulaMaker maker(8128);
+  std::mt19937 traces(13);
+  for (int i = 0; i < 3000; ++i) {
+    const std::string text = maker.make(1 + i % 4);
+    const monitors::ParsedProperties parsed = parse(text);
+    const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
+    OnlineMonitor reused(formula, kHalves, {});
+    for (int run = 0; run < 6; ++run) {
+      const ReferenceTrace trace = random_trace(traces);
+      const RunEnd end = trace.deadlocked ? RunEnd::Deadlock : RunEnd::Cut;
+      reused.reset();
+      OnlineMonitor fresh(formula, kHalves, {});
+      for (const ReferenceStep& s : trace.steps) {
+        ASSERT_EQ(reused.step(StepView(s), 2 * s.time), fresh.step(StepView(s), 2 * s.time))
+            << "case " << i << ": " << text << " on " << describe(trace);
+      }
+      ASSERT_EQ(reused.end(end), fresh.end(end))
+          << "case " << i << ": " << text << " on " << describe(trace);
+    }
+  }
+}
+
 Tri pointwise(const ReferenceTrace& trace, const std::string& text) {
   const monitors::ParsedProperties parsed = parse(text);
   const monitors::Formula& formula = *parsed.file.queries.at(0).formula;
