@@ -2,6 +2,7 @@
 // cache of compiled models, runs the check when it pays (or always, or never).
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 

@@ -150,18 +150,22 @@ bool run_logged(const std::vector<std::string>& argv, const fs::path& log) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-/// The first line of `log` that reports an error, for a one-line warning.
+/// The line of `log` that says best why a step failed, for a one-line warning: a compiler's
+/// or tool's "error:" line before CMake's own "CMake Error" one.
 std::string first_error(const fs::path& log, const std::string& step) {
   std::ifstream in(log);
-  for (std::string line; std::getline(in, line);) {
-    std::string lower = line;
-    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-    if (lower.find("error") == std::string::npos) continue;
+  std::string tool_error, cmake_error;
+  for (std::string line; std::getline(in, line) && tool_error.empty();) {
     line.erase(0, line.find_first_not_of(" \t"));
-    if (line.size() > 160) line = line.substr(0, 157) + "...";
-    return step + " failed: " + line;
+    if (line.starts_with("CMake Error")) {
+      if (cmake_error.empty()) cmake_error = line;
+    } else if (line.find("error:") != std::string::npos) {
+      tool_error = line;
+    }
   }
-  return step + " failed";
+  std::string why = tool_error.empty() ? cmake_error : tool_error;
+  if (why.size() > 160) why = why.substr(0, 157) + "...";
+  return why.empty() ? step + " failed" : step + " failed: " + why;
 }
 
 /// Removes a folder when it goes out of scope (a build that did not complete).
