@@ -168,6 +168,54 @@ std::string first_error(const fs::path& log, const std::string& step) {
   return why.empty() ? step + " failed" : step + " failed: " + why;
 }
 
+/// Writes the project `bipc gen` would write for `model` (without its executable) into `src`;
+/// the project's name, or nullopt with `error` set.
+std::optional<std::string> write_project(const ModelToCompile& model, const fs::path& src,
+                                         std::string& error) {
+  bipc::codegen::ProjectOptions project;
+  project.main = false;
+  project.model_file = model.model_file;
+  project.root = model.root;
+  project.extern_sources = model.extern_sources;
+  project.smcbip_version = SMCBIP_VERSION_TEXT;
+  std::vector<bipc::NamedText> files;
+  try {
+    for (auto& file : bipc::codegen::generate_project(*model.system, project)) {
+      files.push_back({file.name, std::move(file.text)});
+    }
+  } catch (const bipc::codegen::ExternSourceClash& clash) {
+    error = clash.message;
+    return std::nullopt;
+  } catch (const bipc::codegen::UntranslatableCode& untranslatable) {
+    error = untranslatable.message;
+    return std::nullopt;
+  }
+  if (!bipc::write_files_atomically(src.string(), files, error)) return std::nullopt;
+  return bipc::codegen::project_name(project.code.name_space);
+}
+
+/// Configures the project in `src` into `out` (Release, against the package of `tools`) and
+/// builds its plugin there, the tools' output in `log`; false with `error` set.
+bool build_plugin(const Toolchain& tools, const fs::path& src, const fs::path& out,
+                  const std::string& name, const fs::path& log, std::string& error) {
+  if (!run_logged(
+          {tools.cmake, "-S", src, "-B", out, "-G", tools.generator, "-DCMAKE_BUILD_TYPE=Release",
+           "-Dsmcbip_DIR=" + tools.package_dir, "-DCMAKE_CXX_COMPILER=" + tools.compiler,
+           "-DCMAKE_MAKE_PROGRAM=" + tools.build_tool},
+          log)) {
+    error = first_error(log, "configuring");
+    return false;
+  }
+  const unsigned jobs = std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
+  if (!run_logged({tools.cmake, "--build", out, "--target", name + "_plugin", "--parallel",
+                   std::to_string(jobs)},
+                  log)) {
+    error = first_error(log, "building");
+    return false;
+  }
+  return true;
+}
+
 /// Removes a folder when it goes out of scope (a build that did not complete).
 struct RemovedFolder {
   fs::path path;
@@ -293,53 +341,21 @@ std::optional<std::string> PluginCache::build_locked(const ModelToCompile& model
   const RemovedFolder removed{scratch};
   const fs::path src = fs::path(scratch) / "src", out = fs::path(scratch) / "build";
   const fs::path log = fs::path(scratch) / "build.log";
-  bipc::codegen::ProjectOptions project;
-  project.main = false;
-  project.model_file = model.model_file;
-  project.root = model.root;
-  project.extern_sources = model.extern_sources;
-  project.smcbip_version = SMCBIP_VERSION_TEXT;
-  std::vector<bipc::NamedText> files;
-  try {
-    for (auto& file : bipc::codegen::generate_project(*model.system, project)) {
-      files.push_back({file.name, std::move(file.text)});
-    }
-  } catch (const bipc::codegen::ExternSourceClash& clash) {
-    error = clash.message;
-    return std::nullopt;
-  } catch (const bipc::codegen::UntranslatableCode& untranslatable) {
-    error = untranslatable.message;
-    return std::nullopt;
-  }
-  if (!bipc::write_files_atomically(src.string(), files, error)) return std::nullopt;
+  std::optional<std::string> name = write_project(model, src, error);
   const auto start = std::chrono::steady_clock::now();
-  const std::string name = bipc::codegen::project_name(project.code.name_space);
-  if (!run_logged(
-          {tools.cmake, "-S", src, "-B", out, "-G", tools.generator, "-DCMAKE_BUILD_TYPE=Release",
-           "-Dsmcbip_DIR=" + tools.package_dir, "-DCMAKE_CXX_COMPILER=" + tools.compiler,
-           "-DCMAKE_MAKE_PROGRAM=" + tools.build_tool},
-          log)) {
-    error = first_error(log, "configuring");
-    return std::nullopt;
-  }
-  const unsigned jobs = std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
-  if (!run_logged({tools.cmake, "--build", out, "--target", name + "_plugin", "--parallel",
-                   std::to_string(jobs)},
-                  log)) {
-    error = first_error(log, "building");
-    return std::nullopt;
-  }
+  if (!name || !build_plugin(tools, src, out, *name, log, error)) return std::nullopt;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const fs::path ready = fs::path(scratch) / "entry";
   std::error_code ec;
   fs::create_directories(ready, ec);
-  if (!ec) fs::rename(out / (name + "_plugin.so"), ready / "model_plugin.so", ec);
+  if (!ec) fs::rename(out / (*name + "_plugin.so"), ready / "model_plugin.so", ec);
   if (!ec) {
     std::ofstream(ready / "about.txt")
         << "model " << model.model_file << "\nroot " << model.root << "\nhash " << model.hash
         << "\nsmcbip " << identity_ << "\nbuild seconds " << seconds << "\n";
-    fs::rename(ready, entry(model.hash), ec);
+    fs::remove_all(entry(model.hash), ec);  // what is left of an entry without its plugin
+    if (!ec) fs::rename(ready, entry(model.hash), ec);
   }
   if (ec) {
     error = "cannot move the plugin into " + folder_.string() + ": " + ec.message();
