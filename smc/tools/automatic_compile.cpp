@@ -67,7 +67,7 @@ const engines::PluginEntry* compiled_model(CompileMode mode, const ModelToCompil
     const double build_seconds = cache.expected_build_seconds();
     if (estimate.seconds <= build_seconds) return nullptr;
     because = "expected " + seconds_text(estimate.seconds) + " of interpreted runs" +
-              (estimate.sequential ? " (sequential tests estimated)" : "") + ", build about " +
+              (estimate.sequential ? ", sequential tests estimated" : "") + ", build about " +
               seconds_text(build_seconds);
   }
   err << "smcbip: compiling the model (" << because << "); cached in " << folder.string() << "\n";
