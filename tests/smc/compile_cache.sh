@@ -64,6 +64,12 @@ expected_code=0
 "${check[@]}" --compile never >"$out/never.json" 2>"$out/never.err" || expected_code=$?
 grep -q '"estimate"' "$out/never.json" || fail "the interpreted check gave no answers"
 
+# --- a mode that is none of the three is a usage error
+code=0
+"${check[@]}" --compile sometimes >/dev/null 2>"$out/bad_mode.err" || code=$?
+[[ $code == 2 ]] || fail "--compile sometimes exited with $code, not 2"
+has bad_mode "--compile"
+
 # --- auto: a check of a fraction of a second is not worth a build, and says nothing
 run auto_small -- --compile auto
 [[ -s $out/auto_small.err ]] && fail "auto on a small check printed: $(cat "$out/auto_small.err")"
