@@ -8,7 +8,7 @@ best_check() {
   shift 3
   for ((k = 0; k < repeat; k++)); do
     "$@" "$smcbip" check "$model" "$properties" --root "$root" --delta "$delta" \
-      --threads "$threads" --json
+      --threads "$threads" --json --compile never
   done | python3 -c 'import json, sys
 text = sys.stdin.read()
 decoder, at, best = json.JSONDecoder(), 0, None

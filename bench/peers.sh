@@ -45,7 +45,7 @@ sed -i 's/^P=?/const k = 1\nP=?/' "$work/die.mtl"
 # The cases: name, then per tool the command line (empty: not run), and each tool's runs.
 declare -A command runs
 add_case() {  # name smcbip-args ymer-args prism-args
-  command[$1/smcbip]="$smcbip check $2 --threads 1 --json"
+  command[$1/smcbip]="$smcbip check $2 --threads 1 --json --compile never"
   command[$1/ymer]=${YMER:+${3:+$YMER $3}}
   command[$1/prism]=${PRISM:+${4:+$PRISM $4}}
 }

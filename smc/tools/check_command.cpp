@@ -13,6 +13,7 @@
 #include "bipc/output_file.h"
 #include "engines/plugin.h"
 #include "monitors/monitors.h"
+#include "smc/tools/automatic_compile.h"
 #include "smc/tools/first_hit_plot.h"
 #include "smc/tools/model_loading.h"
 #include "smc/tools/progress_bar.h"
@@ -143,10 +144,24 @@ bool plottable(CheckCommand& check, const monitors::PropertyFile& file) {
   return false;
 }
 
+const std::map<std::string, CompileMode> kCompileModes{
+    {"auto", CompileMode::Auto}, {"always", CompileMode::Always}, {"never", CompileMode::Never}};
+
 /// The plugin of --compiled, if given, once it is known to hold the model `hash` names (one
-/// that cannot be loaded throws engines::PluginError, an InputError).
-bool load_compiled(CheckCommand& check, const std::string& hash) {
-  if (check.compiled.empty()) return true;
+/// that cannot be loaded throws engines::PluginError, an InputError); else the one --compile
+/// takes from the cache of compiled models, if any. MPI ranks run interpreted unless given
+/// --compiled, so that all make their runs alike.
+bool load_compiled(CheckCommand& check, const bipc::ir::System& system,
+                   const bipc::ir::ExternSources& externs, const monitors::PropertyFile& file,
+                   const std::string& hash) {
+  if (check.compiled.empty()) {
+    if (check.remote != nullptr) return true;
+    const std::string root = check.model.root.empty() ? system.root_type : check.model.root;
+    check.options.compiled = compiled_model(kCompileModes.at(check.compile),
+                                            {&system, check.model.file, root, hash, externs}, file,
+                                            check.options, check.explore, std::cerr);
+    return true;
+  }
   const engines::Plugin plugin = engines::load_plugin(check.compiled);
   if (hash != plugin.entry->model_hash) {
     std::cerr << "smcbip: error: " << plugin.path << " holds another model (hash "
@@ -228,6 +243,14 @@ void register_check_options(CLI::App& command, CheckCommand& check, bool explore
                   "project), which must be MODEL")
       ->type_name("DIR");
   command
+      .add_option("--compile", check.compile,
+                  "run the model's generated code, built once into the cache of compiled models "
+                  "($SMCBIP_CACHE_DIR, else ~/.cache/smcbip): auto when the interpreted runs "
+                  "are expected to take longer than the build, always, or never (a cached "
+                  "build is used unless never; --compiled wins)")
+      ->check(CLI::IsMember({"auto", "always", "never"}).description(""))
+      ->option_text(cli::choices_text({"auto", "always", "never"}) + " (default: auto)");
+  command
       .add_option("--save-traces", o.save_traces,
                   "keep the trace of every run the answers took in this folder (JSON lines); "
                   "a folder that holds earlier traces is refused")
@@ -283,10 +306,11 @@ int run_check(CheckCommand check) {
     return kInputError;
   }
   // An extern source that cannot be read throws ExternSourceError, an InputError.
-  const std::string hash =
-      bipc::ir::model_hash(*system, bipc::ir::extern_sources_of(*system, check.model.include_dirs));
-  if (!load_compiled(check, hash)) return kInputError;
+  const bipc::ir::ExternSources externs =
+      bipc::ir::extern_sources_of(*system, check.model.include_dirs);
+  const std::string hash = bipc::ir::model_hash(*system, externs);
   check.options.remote = check.remote;
+  if (!load_compiled(check, *system, externs, parsed.file, hash)) return kInputError;
   std::optional<ProgressBar> progress;
   if (!check.worker && stderr_is_terminal()) {
     progress.emplace(std::cerr, parsed.file.queries.size());

@@ -25,6 +25,7 @@ struct CheckCommand {
   smc::RemoteRuns* remote = nullptr;
   bool worker = false;
   std::string compiled;  // --compiled: a plugin, or the folder of a built `bipc gen` project
+  std::string compile = "auto";  // --compile: auto, always or never (the cache of plugins)
   bool explore = false;
   std::string plot, csv;     // explore: files to write
   std::string trajectories;  // the folder simulate queries write their trajectories to
