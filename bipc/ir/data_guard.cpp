@@ -26,19 +26,36 @@ bool false_ends_guard(const std::vector<Instr>& instrs, std::size_t jump) {
   return at == instrs.size();
 }
 
+/// The comparison at instructions `at`..`at + 2`, if there is one.
+std::optional<IntComparison> comparison_at(const std::vector<Instr>& instrs, std::size_t at) {
+  if (at + 3 > instrs.size() || !is_comparison(instrs[at + 2].op) ||
+      instrs[at + 2].kind != ValueKind::Int) {
+    return std::nullopt;
+  }
+  const std::optional<IntOperand> left = int_operand(instrs[at]);
+  const std::optional<IntOperand> right = int_operand(instrs[at + 1]);
+  if (!left || !right) return std::nullopt;
+  return IntComparison{*left, *right, instrs[at + 2].op};
+}
+
 }  // namespace
 
 std::optional<LeadingComparison> leading_comparison(const Code& guard) {
   const std::vector<Instr>& instrs = guard.instrs;
-  if (instrs.size() < 3 || !is_comparison(instrs[2].op) || instrs[2].kind != ValueKind::Int) {
-    return std::nullopt;
+  LeadingComparison out;
+  // Each comparison must be the whole guard or be followed by a `&&` whose false ends it.
+  for (std::size_t at = 0; out.count < LeadingComparison::kMax; at += 4) {
+    const std::optional<IntComparison> test = comparison_at(instrs, at);
+    if (!test) break;
+    if (at + 3 != instrs.size() && !false_ends_guard(instrs, at + 3)) break;
+    out.tests[out.count++] = *test;
+    if (at + 3 == instrs.size()) {
+      out.whole = true;
+      break;
+    }
   }
-  const std::optional<IntOperand> left = int_operand(instrs[0]);
-  const std::optional<IntOperand> right = int_operand(instrs[1]);
-  if (!left || !right) return std::nullopt;
-  const bool whole = instrs.size() == 3;
-  if (!whole && !false_ends_guard(instrs, 3)) return std::nullopt;
-  return LeadingComparison{*left, *right, instrs[2].op, whole};
+  if (out.count == 0) return std::nullopt;
+  return out;
 }
 
 }  // namespace smcbip::bipc::ir

@@ -43,12 +43,12 @@ struct TransitionEntry {
   Index transition = 0;
   Index first_place = bipc::ir::kNone;  // its first `from` place (kNone: it has none)
   bool more_places = false;             // whether it has other `from` places
-  /// The comparison leading its guard when it reads integer slots only (data_guard.h): tested
-  /// before the guard is interpreted, and instead of it when it is the whole guard.
+  /// The comparisons of integer slots leading its guard (data_guard.h): tested before the
+  /// guard is interpreted, and instead of it when they are the whole guard.
   std::optional<bipc::ir::LeadingComparison> leading;
 };
 
-/// Whether the leading comparison of a guard holds on an atom's data and parameters.
+/// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
 [[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
                                                  const Val* atom_data, const Val* atom_params) {
   const auto read = [&](const bipc::ir::IntOperand& o) {
@@ -62,21 +62,33 @@ struct TransitionEntry {
     }
     return o.literal;
   };
-  const std::int64_t a = read(c.left), b = read(c.right);
-  switch (c.op) {
-    case bipc::ir::Op::Eq:
-      return a == b;
-    case bipc::ir::Op::Ne:
-      return a != b;
-    case bipc::ir::Op::Lt:
-      return a < b;
-    case bipc::ir::Op::Le:
-      return a <= b;
-    case bipc::ir::Op::Gt:
-      return a > b;
-    default:
-      return a >= b;
+  for (std::size_t k = 0; k < c.count; ++k) {
+    const bipc::ir::IntComparison& test = c.tests[k];
+    const std::int64_t a = read(test.left), b = read(test.right);
+    bool holds = false;
+    switch (test.op) {
+      case bipc::ir::Op::Eq:
+        holds = a == b;
+        break;
+      case bipc::ir::Op::Ne:
+        holds = a != b;
+        break;
+      case bipc::ir::Op::Lt:
+        holds = a < b;
+        break;
+      case bipc::ir::Op::Le:
+        holds = a <= b;
+        break;
+      case bipc::ir::Op::Gt:
+        holds = a > b;
+        break;
+      default:
+        holds = a >= b;
+        break;
+    }
+    if (!holds) return false;
   }
+  return true;
 }
 
 struct Layout {

@@ -1,9 +1,10 @@
-// The leading comparison of a guard (bipc/ir/data_guard.h), tested straight from the atom's
-// slots, agrees with the interpreter: the guard is false whenever the comparison is, and equal to
-// it when it is the whole guard. Shapes where a false comparison does not decide the guard are
-// not recognised.
+// The leading comparisons of a guard (bipc/ir/data_guard.h), tested straight from the atom's
+// slots, agree with the interpreter: the guard is false whenever one of them is, and equal to
+// their conjunction when they are the whole guard. Shapes where a false comparison does not
+// decide the guard are not recognised.
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <sstream>
 
@@ -63,11 +64,13 @@ constexpr Op kComparisons[] = {Op::Eq, Op::Ne, Op::Lt, Op::Le, Op::Gt, Op::Ge};
 class LeadingComparisonTest : public ::testing::Test {
  protected:
   /// Over every value of data slots 0 and 1 in [-3, 3] (slot 2 and the parameter fixed), the
-  /// comparison never holds where the guard does, and equals it when it is the whole guard.
-  void expect_agreement(const Code& guard, bool whole) {
+  /// guard never holds where the comparisons do not all hold, and equals their conjunction when
+  /// they are the whole guard.
+  void expect_agreement(const Code& guard, bool whole, std::size_t count = 1) {
     const auto leading = bipc::ir::leading_comparison(guard);
     ASSERT_TRUE(leading);
     EXPECT_EQ(leading->whole, whole);
+    EXPECT_EQ(leading->count, count);
     for (std::int64_t a = -3; a <= 3; ++a) {
       for (std::int64_t b = -3; b <= 3; ++b) {
         data_[0] = make_int(a);
@@ -107,14 +110,29 @@ TEST_F(LeadingComparisonTest, WholeComparisonsOfDataParametersAndLiterals) {
   }
 }
 
-TEST_F(LeadingComparisonTest, ComparisonsLeadingConjunctions) {
+TEST_F(LeadingComparisonTest, ConjunctionsOfComparisons) {
   const Code rest{{data(1), push_int(0), op(Op::Gt)}};
   const Code more{{data(2), push_int(1), op(Op::Eq)}};
   for (Op cmp : kComparisons) {
     const Code first{{data(0), push_int(1), op(cmp)}};
-    expect_agreement(conjunction(first, rest), false);
-    expect_agreement(conjunction(conjunction(first, rest), more), false);
+    expect_agreement(conjunction(first, rest), true, 2);
+    expect_agreement(conjunction(conjunction(first, rest), more), true, 3);
   }
+}
+
+TEST_F(LeadingComparisonTest, ComparisonsLeadingOtherCode) {
+  // `data1 + 1 > 0` is not a comparison of slots: the tests stop before it.
+  const Code sum{{data(1), push_int(1), op(Op::Add), push_int(0), op(Op::Gt)}};
+  const Code rest{{data(1), push_int(0), op(Op::Gt)}};
+  for (Op cmp : kComparisons) {
+    const Code first{{data(0), push_int(1), op(cmp)}};
+    expect_agreement(conjunction(first, sum), false, 1);
+    expect_agreement(conjunction(conjunction(first, rest), sum), false, 2);
+  }
+  // Beyond kMax comparisons the rest is left to the interpreter.
+  Code chain{{data(0), push_int(1), op(Op::Ge)}};
+  for (int k = 0; k < 5; ++k) chain = conjunction(chain, {{data(1), push_int(-k), op(Op::Gt)}});
+  expect_agreement(chain, false, bipc::ir::LeadingComparison::kMax);
 }
 
 TEST_F(LeadingComparisonTest, ShapesAFalseComparisonDoesNotDecideAreRefused) {
