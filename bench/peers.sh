@@ -10,6 +10,8 @@
 # second, the answer, and each peer's CPU time per run over smcbip's (whole tests for the SPRT;
 # above 1: smcbip is faster). CPU time, because a machine shared with other work stretches wall
 # time by its load; PRISM's JVM counts the CPU of its compiler and collector threads too.
+# smcbip runs interpreted (`--compile never`): a plugin cached by an earlier check would
+# otherwise make the figures depend on what ran before.
 #
 # The peers are found through the environment, e.g. YMER=/path/to/ymer PRISM=/path/to/prism
 # (PRISM's bin/prism script); without them it prints smcbip's own figures and names what is
