@@ -221,6 +221,51 @@ std::optional<std::vector<PortSet>> defined_interactions(const std::vector<Defin
   return out;
 }
 
+namespace {
+
+/// The datum and literal of a leading `d == literal` (either way round), if the entry has one.
+std::optional<std::pair<Index, std::int64_t>> state_test(const TransitionEntry& entry) {
+  if (!entry.leading || entry.leading->count == 0) return std::nullopt;
+  const bipc::ir::IntComparison& test = entry.leading->tests[0];
+  using Kind = bipc::ir::IntOperand::Kind;
+  if (test.op != bipc::ir::Op::Eq) return std::nullopt;
+  if (test.left.kind == Kind::AtomData && test.right.kind == Kind::Literal) {
+    return std::pair{test.left.index, test.right.literal};
+  }
+  if (test.right.kind == Kind::AtomData && test.left.kind == Kind::Literal) {
+    return std::pair{test.right.index, test.left.literal};
+  }
+  return std::nullopt;
+}
+
+/// The entries by literal when every one is led by `d == literal` on the same datum and there
+/// are enough of them to pay for a search.
+std::optional<ValueDispatch> value_dispatch(const std::vector<TransitionEntry>& entries) {
+  constexpr std::size_t kWorthIt = 4;
+  if (entries.size() < kWorthIt) return std::nullopt;
+  std::vector<std::pair<std::int64_t, std::uint32_t>> by_value;
+  ValueDispatch out;
+  for (std::uint32_t i = 0; i < entries.size(); ++i) {
+    const auto test = state_test(entries[i]);
+    if (!test || (i > 0 && test->first != out.slot)) return std::nullopt;
+    out.slot = test->first;
+    by_value.emplace_back(test->second, i);
+  }
+  std::stable_sort(by_value.begin(), by_value.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::uint32_t i = 0; i < by_value.size(); ++i) {
+    if (out.keys.empty() || out.keys.back() != by_value[i].first) {
+      out.keys.push_back(by_value[i].first);
+      out.first.push_back(i);
+    }
+    out.order.push_back(by_value[i].second);
+  }
+  out.first.push_back(static_cast<std::uint32_t>(by_value.size()));
+  return out;
+}
+
+}  // namespace
+
 std::string build_layout(const System& system, Layout& layout) {
   layout = Layout{};
   for (const bipc::ir::AtomType& type : system.atom_types) {
@@ -234,9 +279,13 @@ std::string build_layout(const System& system, Layout& layout) {
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
     }
     auto& from_place = layout.labelled_from_place.emplace_back();
+    auto& dispatch = layout.dispatch_from_place.emplace_back();
     if (!bipc::ir::is_state_machine(type)) continue;
     from_place.resize(type.places.size());
     for (const TransitionEntry& entry : labelled) from_place[entry.first_place].push_back(entry);
+    for (const std::vector<TransitionEntry>& entries : from_place) {
+      dispatch.push_back(value_dispatch(entries));
+    }
   }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {
     const bipc::ir::AtomType& type = system.atom_types[atom.type];

@@ -2,6 +2,7 @@
 // slots live in a run state, the connectors that interact at the top, and listing orders.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -91,6 +92,21 @@ struct TransitionEntry {
   return true;
 }
 
+/// Transitions (positions in a list of entries) by the literal their guard compares one datum
+/// with: the positions of keys[k] are order[first[k]] .. order[first[k + 1] - 1], in list order.
+struct ValueDispatch {
+  Index slot = 0;                  // the datum (atom data slot)
+  std::vector<std::int64_t> keys;  // sorted, distinct
+  std::vector<std::uint32_t> first, order;
+  /// The positions of the entries whose literal is `value` (none when no entry has it).
+  std::span<const std::uint32_t> entries_for(std::int64_t value) const {
+    const auto it = std::lower_bound(keys.begin(), keys.end(), value);
+    if (it == keys.end() || *it != value) return {};
+    const auto k = static_cast<std::size_t>(it - keys.begin());
+    return {order.data() + first[k], order.data() + first[k + 1]};
+  }
+};
+
 struct Layout {
   std::vector<std::size_t> atom_data, atom_places, atom_clocks, atom_params;  // offsets
   std::vector<std::size_t> connector_data;                                    // offsets
@@ -103,6 +119,10 @@ struct Layout {
   /// place to one place: exactly one place is marked at any time), per place: the labelled
   /// transitions from it, in declaration order. Empty for other types.
   std::vector<std::vector<std::vector<TransitionEntry>>> labelled_from_place;
+  /// Per atom type and place as labelled_from_place: when every transition from the place is
+  /// led by `d == literal` on one datum d (a state variable: `s == 3`), the transitions by
+  /// literal, so that an atom looks only at those its value of d can enable.
+  std::vector<std::vector<std::optional<ValueDispatch>>> dispatch_from_place;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   /// Per connector: whether `defined` lists every interaction (not when there are too many or
   /// the connector is too wide; it is then maximal_only).

@@ -1,6 +1,6 @@
 # Unit tests of the interpreter: guards over clocks read as clock bounds.
 list(APPEND ENGINES_TEST_SOURCES clock_bounds_test.cpp)
 # Guards led by an integer comparison, tested before (or instead of) interpreting them.
-list(APPEND ENGINES_TEST_SOURCES leading_comparison_test.cpp)
+list(APPEND ENGINES_TEST_SOURCES leading_comparison_test.cpp value_dispatch_test.cpp)
 # Faults of the model's code at run time, reported at their place in the model.
 list(APPEND ENGINES_TEST_SOURCES model_faults_test.cpp)
