@@ -1,11 +1,13 @@
 // An atom's steps by interpretation of its transitions, stated once: the Runtime takes them for
 // the atom types its model's code does not compile, and the flat step path over an interpreted
 // model (interpreted_steps.h) for every type. They answer as ModelCode's atom_offers,
-// atom_internal and atom_fire do (model.h), over the atom's own marking.
+// atom_internal and atom_fire do (model.h), over the atom's own marking. Inline: they are the
+// engines' innermost loop, run for every atom a step touches.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "bipc/ir/ir.h"
 #include "engines/interpreter/code_eval.h"
@@ -27,23 +29,63 @@ namespace smcbip::engines {
   return true;
 }
 
-/// Whether the guard of an entry holds now (internal transitions: no time sets).
-[[gnu::always_inline]] inline bool guard_holds(const TransitionEntry& entry,
-                                               const bipc::ir::Transition& transition,
-                                               const Frame& f, ModelCode& eval) {
-  if (entry.leading) {
-    if (!leading_holds(*entry.leading, f.atom_data, f.atom_params)) return false;
-    if (entry.leading->whole) return true;
-  }
-  return eval.holds(transition.guard, f);
+/// Whether the leading comparisons of an entry's guard hold (true when it has none).
+[[gnu::always_inline]] inline bool leading_hold(const Layout& layout, const TransitionEntry& entry,
+                                                const Frame& f) {
+  return entry.leading == bipc::ir::kNone ||
+         leading_holds(layout.leading_tests[entry.leading], f.atom_data, f.atom_params);
+}
+
+/// Offers the transition of `entry` when it is enabled; its port when that port already has an
+/// offer (a non-deterministic choice), else kNone.
+[[gnu::always_inline]] inline bipc::ir::Index offer(const Layout& layout,
+                                                    const bipc::ir::AtomType& type,
+                                                    const TransitionEntry& entry,
+                                                    const std::uint8_t* marking, const Frame& f,
+                                                    ModelCode& eval,
+                                                    std::optional<AtomPortValue>* offers) {
+  const bipc::ir::Transition& tr = type.transitions[entry.transition];
+  if (!from_marked(entry, tr, marking) || !leading_hold(layout, entry, f)) return bipc::ir::kNone;
+  // Built in place (no copy of a returned Interval, which stalled on store forwarding).
+  const Interval when = [&] {
+    if (tr.guard.empty() || entry.leading_whole) return Interval::all();
+    return eval.holds_when(tr.guard, f);
+  }();
+  if (when.empty()) return bipc::ir::kNone;
+  if (offers[tr.port]) return tr.port;
+  offers[tr.port] = AtomPortValue{entry.transition, {when, tr.urgency}};
+  return bipc::ir::kNone;
 }
 
 /// ModelCode::atom_offers by interpretation: the labelled transitions from the one marked place
-/// of a state machine, else all, in declaration order.
-bipc::ir::Index interpreted_offers(const bipc::ir::System& system, const Layout& layout,
-                                   bipc::ir::Index type, const std::uint8_t* marking,
-                                   const Frame& f, ModelCode& eval,
-                                   std::optional<AtomPortValue>* offers);
+/// of a state machine (of those led by `d == literal` on one datum, only the ones whose literal
+/// is d's value), else all, in declaration order.
+[[gnu::always_inline]] inline bipc::ir::Index interpreted_offers(
+    const bipc::ir::System& system, const Layout& layout, bipc::ir::Index type,
+    const std::uint8_t* marking, const Frame& f, ModelCode& eval,
+    std::optional<AtomPortValue>* offers) {
+  const bipc::ir::AtomType& atom_type = system.atom_types[type];
+  const std::vector<std::vector<TransitionEntry>>& from_place = layout.labelled_from_place[type];
+  const std::vector<TransitionEntry>* entries = &layout.labelled_transitions[type];
+  if (!from_place.empty()) {
+    std::size_t marked = 0;
+    while (marked + 1 < from_place.size() && !marking[marked]) ++marked;
+    entries = &from_place[marked];
+    if (const std::optional<ValueDispatch>& dispatch = layout.dispatch_from_place[type][marked]) {
+      for (std::uint32_t i : dispatch->entries_for(f.atom_data[dispatch->slot].i)) {
+        const bipc::ir::Index port =
+            offer(layout, atom_type, (*entries)[i], marking, f, eval, offers);
+        if (port != bipc::ir::kNone) return port;
+      }
+      return bipc::ir::kNone;
+    }
+  }
+  for (const TransitionEntry& entry : *entries) {
+    const bipc::ir::Index port = offer(layout, atom_type, entry, marking, f, eval, offers);
+    if (port != bipc::ir::kNone) return port;
+  }
+  return bipc::ir::kNone;
+}
 
 /// ModelCode::atom_internal by interpretation.
 bipc::ir::Index interpreted_internal(const bipc::ir::System& system, const Layout& layout,
@@ -52,7 +94,16 @@ bipc::ir::Index interpreted_internal(const bipc::ir::System& system, const Layou
 
 /// ModelCode::atom_fire by interpretation: the tokens move, then the action runs; false,
 /// before the action, when a token would land on a marked place.
-bool interpreted_fire(const bipc::ir::Transition& transition, std::uint8_t* marking, const Frame& f,
-                      ModelCode& eval);
+[[gnu::always_inline]] inline bool interpreted_fire(const bipc::ir::Transition& transition,
+                                                    std::uint8_t* marking, const Frame& f,
+                                                    ModelCode& eval) {
+  for (bipc::ir::Index p : transition.from) marking[p] = 0;
+  for (bipc::ir::Index p : transition.to) {
+    if (marking[p]) return false;
+    marking[p] = 1;
+  }
+  eval.execute(transition.action, f);
+  return true;
+}
 
 }  // namespace smcbip::engines

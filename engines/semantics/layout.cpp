@@ -224,9 +224,10 @@ std::optional<std::vector<PortSet>> defined_interactions(const std::vector<Defin
 namespace {
 
 /// The datum and literal of a leading `d == literal` (either way round), if the entry has one.
-std::optional<std::pair<Index, std::int64_t>> state_test(const TransitionEntry& entry) {
-  if (!entry.leading || entry.leading->count == 0) return std::nullopt;
-  const bipc::ir::IntComparison& test = entry.leading->tests[0];
+std::optional<std::pair<Index, std::int64_t>> state_test(const Layout& layout,
+                                                         const TransitionEntry& entry) {
+  if (entry.leading == bipc::ir::kNone) return std::nullopt;
+  const bipc::ir::IntComparison& test = layout.leading_tests[entry.leading].tests[0];
   using Kind = bipc::ir::IntOperand::Kind;
   if (test.op != bipc::ir::Op::Eq) return std::nullopt;
   if (test.left.kind == Kind::AtomData && test.right.kind == Kind::Literal) {
@@ -240,13 +241,14 @@ std::optional<std::pair<Index, std::int64_t>> state_test(const TransitionEntry& 
 
 /// The entries by literal when every one is led by `d == literal` on the same datum and there
 /// are enough of them to pay for a search.
-std::optional<ValueDispatch> value_dispatch(const std::vector<TransitionEntry>& entries) {
+std::optional<ValueDispatch> value_dispatch(const Layout& layout,
+                                            const std::vector<TransitionEntry>& entries) {
   constexpr std::size_t kWorthIt = 4;
   if (entries.size() < kWorthIt) return std::nullopt;
   std::vector<std::pair<std::int64_t, std::uint32_t>> by_value;
   ValueDispatch out;
   for (std::uint32_t i = 0; i < entries.size(); ++i) {
-    const auto test = state_test(entries[i]);
+    const auto test = state_test(layout, entries[i]);
     if (!test || (i > 0 && test->first != out.slot)) return std::nullopt;
     out.slot = test->first;
     by_value.emplace_back(test->second, i);
@@ -273,8 +275,12 @@ std::string build_layout(const System& system, Layout& layout) {
     auto& internal = layout.internal_transitions.emplace_back();
     for (Index t = 0; t < type.transitions.size(); ++t) {
       const bipc::ir::Transition& transition = type.transitions[t];
-      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1,
-                            bipc::ir::leading_comparison(transition.guard)};
+      TransitionEntry entry{t, bipc::ir::kNone, transition.from.size() > 1};
+      if (auto leading = bipc::ir::leading_comparison(transition.guard)) {
+        entry.leading = static_cast<Index>(layout.leading_tests.size());
+        entry.leading_whole = leading->whole;
+        layout.leading_tests.push_back(*leading);
+      }
       if (!transition.from.empty()) entry.first_place = transition.from.front();
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
     }
@@ -284,7 +290,7 @@ std::string build_layout(const System& system, Layout& layout) {
     from_place.resize(type.places.size());
     for (const TransitionEntry& entry : labelled) from_place[entry.first_place].push_back(entry);
     for (const std::vector<TransitionEntry>& entries : from_place) {
-      dispatch.push_back(value_dispatch(entries));
+      dispatch.push_back(value_dispatch(layout, entries));
     }
   }
   for (const bipc::ir::AtomInstance& atom : system.atoms) {

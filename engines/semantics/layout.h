@@ -44,9 +44,11 @@ struct TransitionEntry {
   Index transition = 0;
   Index first_place = bipc::ir::kNone;  // its first `from` place (kNone: it has none)
   bool more_places = false;             // whether it has other `from` places
-  /// The comparisons of integer slots leading its guard (data_guard.h): tested before the
-  /// guard is interpreted, and instead of it when they are the whole guard.
-  std::optional<bipc::ir::LeadingComparison> leading;
+  /// The comparisons of integer slots leading its guard (data_guard.h), as an index into
+  /// Layout::leading_tests (kNone: none): tested before the guard is interpreted, and instead of
+  /// it when they are the whole guard.
+  Index leading = bipc::ir::kNone;
+  bool leading_whole = false;  // they are the whole guard
 };
 
 /// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
@@ -123,6 +125,8 @@ struct Layout {
   /// led by `d == literal` on one datum d (a state variable: `s == 3`), the transitions by
   /// literal, so that an atom looks only at those its value of d can enable.
   std::vector<std::vector<std::optional<ValueDispatch>>> dispatch_from_place;
+  /// The leading comparisons of guards (TransitionEntry::leading).
+  std::vector<bipc::ir::LeadingComparison> leading_tests;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   /// Per connector: whether `defined` lists every interaction (not when there are too many or
   /// the connector is too wide; it is then maximal_only).
