@@ -8,6 +8,8 @@
 #include <sstream>
 #include <vector>
 
+#include "tests/engines/code_builders.h"
+
 namespace smcbip::engines {
 namespace {
 
@@ -15,52 +17,16 @@ using bipc::ir::Code;
 using bipc::ir::Instr;
 using bipc::ir::Op;
 using bipc::ir::Scope;
+using code_builders::push_float;
+using code_builders::push_int;
 
 Instr load(Scope scope, bipc::ir::Index index) {
-  Instr in;
-  in.op = Op::Load;
-  in.scope = scope;
-  in.kind = ValueKind::Float;
-  in.index = index;
-  return in;
+  return code_builders::load(scope, index, ValueKind::Float);
 }
-
 Instr clock(bipc::ir::Index index) { return load(Scope::Clock, index); }
-
-Instr push_float(double value) {
-  Instr in;
-  in.op = Op::PushFloat;
-  in.kind = ValueKind::Float;
-  in.imm.f = value;
-  return in;
-}
-
-Instr push_int(std::int64_t value) {
-  Instr in;
-  in.op = Op::PushInt;
-  in.kind = ValueKind::Int;
-  in.imm.i = value;
-  return in;
-}
-
-Instr op(Op code, ValueKind kind = ValueKind::Float) {
-  Instr in;
-  in.op = code;
-  in.kind = kind;
-  return in;
-}
-
+Instr op(Op code, ValueKind kind = ValueKind::Float) { return code_builders::op(code, kind); }
 Instr data(bipc::ir::Index slot) { return load(Scope::AtomData, slot); }
-
-/// `a && b`, as the compiler lays it out: the jump lands after b.
-Code conjunction(const Code& a, const Code& b) {
-  Code out = a;
-  Instr jump = op(Op::JumpIfFalseKeep, ValueKind::Bool);
-  jump.index = static_cast<bipc::ir::Index>(a.instrs.size() + 1 + b.instrs.size());
-  out.instrs.push_back(jump);
-  out.instrs.insert(out.instrs.end(), b.instrs.begin(), b.instrs.end());
-  return out;
-}
+Code conjunction(const Code& a, const Code& b) { return code_builders::joined(a, b); }
 
 class ClockBoundsTest : public ::testing::Test {
  protected:

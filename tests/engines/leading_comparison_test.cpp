@@ -11,6 +11,7 @@
 #include "bipc/ir/data_guard.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/layout.h"
+#include "tests/engines/code_builders.h"
 
 namespace smcbip::engines {
 namespace {
@@ -19,45 +20,18 @@ using bipc::ir::Code;
 using bipc::ir::Instr;
 using bipc::ir::Op;
 using bipc::ir::Scope;
+using code_builders::push_int;
 
 Instr load(Scope scope, bipc::ir::Index index, ValueKind kind = ValueKind::Int) {
-  Instr in;
-  in.op = Op::Load;
-  in.scope = scope;
-  in.kind = kind;
-  in.index = index;
-  return in;
+  return code_builders::load(scope, index, kind);
 }
-
-Instr push_int(std::int64_t value) {
-  Instr in;
-  in.op = Op::PushInt;
-  in.kind = ValueKind::Int;
-  in.imm.i = value;
-  return in;
-}
-
-Instr op(Op code, ValueKind kind = ValueKind::Int) {
-  Instr in;
-  in.op = code;
-  in.kind = kind;
-  return in;
-}
-
+Instr op(Op code, ValueKind kind = ValueKind::Int) { return code_builders::op(code, kind); }
 Instr data(bipc::ir::Index slot) { return load(Scope::AtomData, slot); }
 Instr param(bipc::ir::Index slot) { return load(Scope::AtomParam, slot); }
-
-/// `a && b` or `a || b`, as the compiler lays them out: the jump lands after b.
-Code joined(const Code& a, const Code& b, Op jump_op) {
-  Code out = a;
-  Instr jump = op(jump_op, ValueKind::Bool);
-  jump.index = static_cast<bipc::ir::Index>(a.instrs.size() + 1 + b.instrs.size());
-  out.instrs.push_back(jump);
-  out.instrs.insert(out.instrs.end(), b.instrs.begin(), b.instrs.end());
-  return out;
+Code conjunction(const Code& a, const Code& b) { return code_builders::joined(a, b); }
+Code disjunction(const Code& a, const Code& b) {
+  return code_builders::joined(a, b, Op::JumpIfTrueKeep);
 }
-Code conjunction(const Code& a, const Code& b) { return joined(a, b, Op::JumpIfFalseKeep); }
-Code disjunction(const Code& a, const Code& b) { return joined(a, b, Op::JumpIfTrueKeep); }
 
 constexpr Op kComparisons[] = {Op::Eq, Op::Ne, Op::Lt, Op::Le, Op::Gt, Op::Ge};
 

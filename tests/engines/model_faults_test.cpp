@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engines/engines.h"
+#include "tests/engines/run_once.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::tests {
@@ -75,13 +76,7 @@ end
 )";
 
 engines::RunResult run(const bipc::ir::System& system, EngineKind engine) {
-  engines::SimulateOptions options;
-  options.engine = engine;
-  options.threads = 2;
-  options.seed = 3;
-  options.limit = 20;
-  std::ostringstream out;
-  return engines::simulate(system, options, engines::Externs::with_builtins(), out);
+  return run_once(system, engine, 3, 20);
 }
 
 struct Fault {
