@@ -10,7 +10,7 @@ bipc::ir::Index interpreted_internal(const bipc::ir::System& system, const Layou
   bipc::ir::Index enabled = bipc::ir::kNone;
   for (const TransitionEntry& entry : layout.internal_transitions[type]) {
     const bipc::ir::Transition& tr = atom_type.transitions[entry.transition];
-    if (!from_marked(entry, tr, marking) || !leading_hold(layout, entry, f)) continue;
+    if (!from_marked(entry, tr, marking) || !entry_leading_holds(layout, entry, f)) continue;
     if (!entry.leading_whole && !eval.holds(tr.guard, f)) continue;
     if (enabled != bipc::ir::kNone) return ModelCode::kSeveralTransitions;
     enabled = entry.transition;

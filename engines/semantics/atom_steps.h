@@ -1,6 +1,7 @@
 // An atom's steps by interpretation of its transitions, stated once: the Runtime takes them for
 // the atom types its model's code does not compile, and the flat step path over an interpreted
-// model (interpreted_steps.h) for every type. They answer as ModelCode's atom_offers,
+// model (interpreted_steps.h) for every type, with the leading comparisons of guards
+// (data_guard.h) tested from the atom's slots. They answer as ModelCode's atom_offers,
 // atom_internal and atom_fire do (model.h), over the atom's own marking. Inline: they are the
 // engines' innermost loop, run for every atom a step touches.
 #pragma once
@@ -29,9 +30,53 @@ namespace smcbip::engines {
   return true;
 }
 
+/// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
+[[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
+                                                 const Val* atom_data, const Val* atom_params) {
+  const auto read = [&](const bipc::ir::IntOperand& o) {
+    switch (o.kind) {
+      case bipc::ir::IntOperand::Kind::AtomData:
+        return atom_data[o.index].i;
+      case bipc::ir::IntOperand::Kind::AtomParam:
+        return atom_params[o.index].i;
+      case bipc::ir::IntOperand::Kind::Literal:
+        break;
+    }
+    return o.literal;
+  };
+  for (std::size_t k = 0; k < c.count; ++k) {
+    const bipc::ir::IntComparison& test = c.tests[k];
+    const std::int64_t a = read(test.left), b = read(test.right);
+    bool holds = false;
+    switch (test.op) {
+      case bipc::ir::Op::Eq:
+        holds = a == b;
+        break;
+      case bipc::ir::Op::Ne:
+        holds = a != b;
+        break;
+      case bipc::ir::Op::Lt:
+        holds = a < b;
+        break;
+      case bipc::ir::Op::Le:
+        holds = a <= b;
+        break;
+      case bipc::ir::Op::Gt:
+        holds = a > b;
+        break;
+      default:
+        holds = a >= b;
+        break;
+    }
+    if (!holds) return false;
+  }
+  return true;
+}
+
 /// Whether the leading comparisons of an entry's guard hold (true when it has none).
-[[gnu::always_inline]] inline bool leading_hold(const Layout& layout, const TransitionEntry& entry,
-                                                const Frame& f) {
+[[gnu::always_inline]] inline bool entry_leading_holds(const Layout& layout,
+                                                       const TransitionEntry& entry,
+                                                       const Frame& f) {
   return entry.leading == bipc::ir::kNone ||
          leading_holds(layout.leading_tests[entry.leading], f.atom_data, f.atom_params);
 }
@@ -45,7 +90,8 @@ namespace smcbip::engines {
                                                     ModelCode& eval,
                                                     std::optional<AtomPortValue>* offers) {
   const bipc::ir::Transition& tr = type.transitions[entry.transition];
-  if (!from_marked(entry, tr, marking) || !leading_hold(layout, entry, f)) return bipc::ir::kNone;
+  if (!from_marked(entry, tr, marking) || !entry_leading_holds(layout, entry, f))
+    return bipc::ir::kNone;
   // Built in place (no copy of a returned Interval, which stalled on store forwarding).
   const Interval when = [&] {
     if (tr.guard.empty() || entry.leading_whole) return Interval::all();

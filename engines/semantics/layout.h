@@ -51,49 +51,6 @@ struct TransitionEntry {
   bool leading_whole = false;  // they are the whole guard
 };
 
-/// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
-[[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
-                                                 const Val* atom_data, const Val* atom_params) {
-  const auto read = [&](const bipc::ir::IntOperand& o) {
-    switch (o.kind) {
-      case bipc::ir::IntOperand::Kind::AtomData:
-        return atom_data[o.index].i;
-      case bipc::ir::IntOperand::Kind::AtomParam:
-        return atom_params[o.index].i;
-      case bipc::ir::IntOperand::Kind::Literal:
-        break;
-    }
-    return o.literal;
-  };
-  for (std::size_t k = 0; k < c.count; ++k) {
-    const bipc::ir::IntComparison& test = c.tests[k];
-    const std::int64_t a = read(test.left), b = read(test.right);
-    bool holds = false;
-    switch (test.op) {
-      case bipc::ir::Op::Eq:
-        holds = a == b;
-        break;
-      case bipc::ir::Op::Ne:
-        holds = a != b;
-        break;
-      case bipc::ir::Op::Lt:
-        holds = a < b;
-        break;
-      case bipc::ir::Op::Le:
-        holds = a <= b;
-        break;
-      case bipc::ir::Op::Gt:
-        holds = a > b;
-        break;
-      default:
-        holds = a >= b;
-        break;
-    }
-    if (!holds) return false;
-  }
-  return true;
-}
-
 /// Transitions (positions in a list of entries) by the literal their guard compares one datum
 /// with: the positions of keys[k] are order[first[k]] .. order[first[k + 1] - 1], in list order.
 struct ValueDispatch {

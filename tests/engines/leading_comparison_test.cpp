@@ -10,7 +10,7 @@
 
 #include "bipc/ir/data_guard.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/semantics/layout.h"
+#include "engines/semantics/atom_steps.h"
 #include "tests/engines/code_builders.h"
 
 namespace smcbip::engines {
