@@ -94,6 +94,8 @@ if ! diff -u "$scratch/outline.txt" "$consumer_build/model_outline.txt" >&2; the
 fi
 
 [[ $status -eq 0 ]] || fail "outputs differ (files in $scratch)"
-echo "package test: installed into $prefix; consumer, plugin and installed smcbip match" \
+# The prefix and the consumer's build are some hundreds of megabytes; the logs stay.
+rm -rf "$prefix" "$consumer_build"
+echo "package test: installed, built against; consumer, plugin and installed smcbip match" \
      "smcbip simulate ($(wc -l <"$scratch/expected.txt") lines," \
      "exit $(cat "$scratch/expected.txt.code"))"

@@ -100,4 +100,6 @@ if [[ -f $demo/InterfaceView.aadl ]]; then
 else
   echo "skipped Demo_ContextParams: ../shared/data/taste is not beside the source tree"
 fi
+# The installed prefix is some hundreds of megabytes; the logs and generated files stay.
+rm -rf "$work/prefix"
 echo "c_bodies: all checks passed"
