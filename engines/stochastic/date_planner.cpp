@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "engines/stochastic/clock_dates.h"
+
 namespace smcbip::engines {
 
 TimeValue uniform_date(const Interval& window, RandomStream& random) {
@@ -239,17 +241,23 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
   }
   const DateDistribution& distribution = fixed ? fixed->distribution : *made_now;
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
-  // clock that has already advanced truncates the distribution at its value.
-  const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  const std::optional<double> sample = distribution.sample_above(
-      lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); });
-  if (!sample) {
+  // clock that has already advanced truncates the distribution at its value. The clock is read
+  // from the state here, not through Runtime calls: a draw is a large part of a Markovian
+  // model's step.
+  const std::size_t slot = runtime.layout().atom_clocks[atom] + annotation.clock;
+  const ClockState& clock = runtime.state().clocks[slot];
+  const TimeValue unit = runtime.layout().clock_units[slot];
+  const double lower = clock_value_at(clock, unit, window.first());
+  double sample = 0.0;
+  if (!distribution.sample_above(
+          lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); },
+          sample)) {
     error = "missed support: " + where() + " draws from " + distribution.describe() +
             " but its clock " + type.clocks[annotation.clock].name + " is already at " +
             std::to_string(lower) + ", beyond every date of the distribution";
     return false;
   }
-  date = std::max(window.first(), runtime.clock_reaches(atom, annotation.clock, *sample));
+  date = std::max(window.first(), clock_reaches(clock, unit, runtime.state().now, sample));
   return true;
 }
 
