@@ -97,10 +97,11 @@ class Simulation {
     }
     // Only real time reads the platform clock (a system call's worth of time per run).
     if (options_.real_time) start_ = std::chrono::steady_clock::now();
-    if (!scheduler_.start()) return error();
+    CompiledSteps* steps = compiled_steps();
+    if (!(steps ? scheduler_.start_state() : scheduler_.start())) return error();
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
-    if (CompiledSteps* steps = compiled_steps()) {
+    if (steps) {
       if (std::optional<RunResult> result = run_compiled(*steps)) return *result;
       if (std::optional<RunResult> result = replay_quietly(steps_)) return *result;
     }
