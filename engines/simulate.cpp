@@ -201,7 +201,12 @@ class Simulation {
   }
 
   RunResult end(RunResult result) {
-    observer_.finish(result.end, result.code, located_message(result.where, result.message));
+    // Without a place, the message as it is: a run that ends well builds no string.
+    if (result.where.empty()) {
+      observer_.finish(result.end, result.code, result.message);
+    } else {
+      observer_.finish(result.end, result.code, located_message(result.where, result.message));
+    }
     return result;
   }
 
