@@ -53,6 +53,7 @@ void Simulator::Shared::prepare(const Externs& externs) {
   stochastic = options.stochastic.value_or(has_stochastic_ports(system));
   absorbing_checks = options.stop_absorbing && problem.empty() && layout.extern_ports.empty() &&
                      !reads_clocks_or_calls(system);
+  same_start = problem.empty() && layout.extern_ports.empty() && system.functions.empty();
 }
 
 namespace detail {
@@ -108,6 +109,17 @@ bool Scheduler::start() {
   return options_.real_time || runtime_.resume_atoms(0) || record_error();
 }
 
+bool Scheduler::start_state() {
+  if (parts_->initial_state) {
+    // Assigned in place: the state's buffers keep their size from run to run.
+    runtime_.state() = *parts_->initial_state;
+    return true;
+  }
+  if (!start()) return false;
+  if (shared_.same_start && !options_.real_time) parts_->initial_state = runtime_.state();
+  return true;
+}
+
 bool Scheduler::restart(std::uint64_t run_index) {
   random_ = RandomStream(shared_.seed, run_index);
   planner_.forget();
@@ -129,11 +141,23 @@ CompiledSteps* Scheduler::compiled_steps() {
   return parts_->compiled_steps.get();
 }
 
+namespace {
+
+/// `to` made a copy of `from`, whose size stays the same from step to step: copied in place,
+/// without assign()'s reallocation path, a noticeable part of a short step.
+template <class T>
+void copy_over(const std::vector<T>& from, std::vector<T>& to) {
+  if (to.size() != from.size()) to.resize(from.size());
+  std::copy(from.begin(), from.end(), to.begin());
+}
+
+}  // namespace
+
 void Scheduler::remember_discrete_state() {
   const RunState& state = runtime_.state();
-  parts_->data_before.assign(state.data.begin(), state.data.end());
-  parts_->marking_before.assign(state.marking.begin(), state.marking.end());
-  parts_->resume_before.assign(state.resume_pending.begin(), state.resume_pending.end());
+  copy_over(state.data, parts_->data_before);
+  copy_over(state.marking, parts_->marking_before);
+  copy_over(state.resume_pending, parts_->resume_before);
 }
 
 bool Scheduler::discrete_state_kept(const RunState& state) const {

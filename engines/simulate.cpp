@@ -97,10 +97,11 @@ class Simulation {
     }
     // Only real time reads the platform clock (a system call's worth of time per run).
     if (options_.real_time) start_ = std::chrono::steady_clock::now();
-    if (!scheduler_.start()) return error();
+    CompiledSteps* steps = compiled_steps();
+    if (!(steps ? scheduler_.start_state() : scheduler_.start())) return error();
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
-    if (CompiledSteps* steps = compiled_steps()) {
+    if (steps) {
       if (std::optional<RunResult> result = run_compiled(*steps)) return *result;
       if (std::optional<RunResult> result = replay_quietly(steps_)) return *result;
     }
@@ -200,7 +201,12 @@ class Simulation {
   }
 
   RunResult end(RunResult result) {
-    observer_.finish(result.end, result.code, located_message(result.where, result.message));
+    // Without a place, the message as it is: a run that ends well builds no string.
+    if (result.where.empty()) {
+      observer_.finish(result.end, result.code, result.message);
+    } else {
+      observer_.finish(result.end, result.code, located_message(result.where, result.message));
+    }
     return result;
   }
 

@@ -46,6 +46,10 @@ struct Simulator::Shared {
   /// options.stop_absorbing on a model where the places and data alone decide what is
   /// enabled (see SimulateOptions::stop_absorbing): runs look for absorbing states.
   bool absorbing_checks = false;
+  /// No extern ports or functions: the initial actions and resumes, the only other code
+  /// start() runs, draw nothing and read nothing from outside, so every run starts in the same
+  /// state.
+  bool same_start = false;
   /// The runtimes (with their buffers) of runs that ended, for the next runs to take over
   /// rather than build their own: one run's set-up cost as much as a short run.
   std::vector<std::unique_ptr<detail::RunParts>> spare_parts;
@@ -126,6 +130,9 @@ struct RunParts {
   std::vector<Val> data_before;
   std::vector<std::uint8_t> marking_before, resume_before;
   RunState absorbing_probe;
+  /// The state start() left the first time, when every run starts from it (see
+  /// Shared::same_start): a run on the compiled step path starts from a copy.
+  std::optional<RunState> initial_state;
   /// The model's compiled step path over this runtime (made once; null when it has none).
   std::unique_ptr<CompiledSteps> compiled_steps;
   bool compiled_steps_made = false;
@@ -148,6 +155,11 @@ class Scheduler {
   /// Initial actions and checks, and in simulated time the initial resumes; false with error()
   /// set on failure.
   bool start();
+  /// start() for a run on the compiled step path, which reads the runtime's state alone (not
+  /// its items): a copy of the state the first start() left when every run starts the same, so
+  /// that a short run does not pay for the initial actions and items again. A path that
+  /// falls back to the runtime's steps restarts it.
+  bool start_state();
   /// start() for run `run_index` of the seed: a new run from the initial state, which reuses
   /// the buffers the last one grew.
   bool restart(std::uint64_t run_index);

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "engines/semantics/runtime.h"
+#include "engines/stochastic/clock_dates.h"
 
 namespace smcbip::engines {
 
@@ -14,15 +15,7 @@ double Runtime::clock_value(Index atom, Index clock, TimeValue at) const {
 
 TimeValue Runtime::clock_reaches(Index atom, Index clock, double value) const {
   const std::size_t slot = layout_.atom_clocks[atom] + clock;
-  const ClockState& c = state_.clocks[slot];
-  const double now_value = CodeEvaluator::clock_value(c, layout_.clock_units[slot], state_.now);
-  if (value <= now_value) return state_.now;
-  if (c.rate <= 0.0) return kPlusInfinity;
-  // Clocks are linear in the delay: value = now_value + rate * delay / unit.
-  const double delay =
-      std::ceil((value - now_value) * static_cast<double>(layout_.clock_units[slot]) / c.rate);
-  if (delay >= static_cast<double>(kPlusInfinity - state_.now)) return kPlusInfinity;
-  return state_.now + static_cast<TimeValue>(delay);
+  return engines::clock_reaches(state_.clocks[slot], layout_.clock_units[slot], state_.now, value);
 }
 
 std::optional<double> number_param(const bipc::ir::Code& code) {

@@ -73,8 +73,10 @@ class FlatSteps final : public CompiledSteps {
     eager_count_ = 0;
     enabled_.assign(t_.positions(), Flag::Off);
     raw_.assign(t_.positions(), Constraint{});
-    plans_.assign(t_.positions(), DatePlanner::Plan{});
-    generation_ = 1;
+    // The race count goes on from the last run's, one race skipped: no plan of that run is
+    // then seen in the race before this run's first, so none is kept, and they need no reset.
+    if (plans_.size() != t_.positions()) plans_.assign(t_.positions(), DatePlanner::Plan{});
+    ++generation_;
     try {
       for (Index a = 0; a < t_.atoms.size(); ++a) {
         if (!update_atom(a, atom_frame(a))) return false;

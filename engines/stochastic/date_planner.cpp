@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "engines/stochastic/clock_dates.h"
+
 namespace smcbip::engines {
 
 TimeValue uniform_date(const Interval& window, RandomStream& random) {
@@ -53,6 +55,7 @@ DatePlanner::DatePlanner(const bipc::ir::System& system, const CustomDistributio
     first_port_.push_back(stochastic_ports_.size());
     for (const bipc::ir::Port& port : system.atom_types[atom.type].ports) {
       stochastic_ports_.push_back(port.stochastic ? 1 : 0);
+      port_clocks_.push_back(port.stochastic ? port.stochastic->clock : 0);
       fixed_distributions_.push_back(port.stochastic ? fixed_distribution(*port.stochastic)
                                                      : std::nullopt);
     }
@@ -222,35 +225,54 @@ TimeValue DatePlanner::draw_timed(bipc::Urgency urgency, const Interval& window)
 
 bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                                   TimeValue& date, std::string& error) {
-  const auto& type = system_.atom_types[system_.atoms[atom].type];
-  const bipc::ir::Stochastic& annotation = *type.ports[port].stochastic;
-  // Only error messages name the port: no string is built for a successful draw.
-  auto where = [&] { return runtime.layout().atom_names[atom] + "." + type.ports[port].name; };
-  std::optional<DateDistribution> made_now;
-  std::optional<Fixed>& fixed = fixed_distributions_[first_port_[atom] + port];
-  if (!fixed) {
-    runtime.stochastic_params(atom, port, params_);
-    auto made = make_distribution(annotation, params_);
-    if (auto* message = std::get_if<std::string>(&made)) {
-      error = "@stochastic distribution of " + where() + ": " + *message;
-      return false;
-    }
-    made_now = std::get<DateDistribution>(made);
+  const std::size_t flat = first_port_[atom] + port;
+  if (std::optional<Fixed>& fixed = fixed_distributions_[flat]) {
+    return draw_from(runtime, atom, port, fixed->distribution, &*fixed, window, date, error);
   }
-  const DateDistribution& distribution = fixed ? fixed->distribution : *made_now;
+  runtime.stochastic_params(atom, port, params_);
+  auto made = make_distribution(annotation_of(atom, port), params_);
+  if (auto* message = std::get_if<std::string>(&made)) {
+    error = "@stochastic distribution of " + port_name(runtime, atom, port) + ": " + *message;
+    return false;
+  }
+  return draw_from(runtime, atom, port, std::get<DateDistribution>(made), nullptr, window, date,
+                   error);
+}
+
+bool DatePlanner::draw_from(Runtime& runtime, Index atom, Index port,
+                            const DateDistribution& distribution, Fixed* fixed,
+                            const Interval& window, TimeValue& date, std::string& error) {
   // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
-  // clock that has already advanced truncates the distribution at its value.
-  const double lower = runtime.clock_value(atom, annotation.clock, window.first());
-  const std::optional<double> sample = distribution.sample_above(
-      lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); });
-  if (!sample) {
-    error = "missed support: " + where() + " draws from " + distribution.describe() +
-            " but its clock " + type.clocks[annotation.clock].name + " is already at " +
+  // clock that has already advanced truncates the distribution at its value. The clock is read
+  // from the state here, not through Runtime calls: a draw is a large part of a Markovian
+  // model's step.
+  const std::size_t slot =
+      runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
+  const ClockState& clock = runtime.state().clocks[slot];
+  const TimeValue unit = runtime.layout().clock_units[slot];
+  const double lower = clock_value_at(clock, unit, window.first());
+  double sample = 0.0;
+  if (!distribution.sample_above(
+          lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); },
+          sample)) {
+    const auto& type = system_.atom_types[system_.atoms[atom].type];
+    error = "missed support: " + port_name(runtime, atom, port) + " draws from " +
+            distribution.describe() + " but its clock " +
+            type.clocks[annotation_of(atom, port).clock].name + " is already at " +
             std::to_string(lower) + ", beyond every date of the distribution";
     return false;
   }
-  date = std::max(window.first(), runtime.clock_reaches(atom, annotation.clock, *sample));
+  date = std::max(window.first(), clock_reaches(clock, unit, runtime.state().now, sample));
   return true;
+}
+
+const bipc::ir::Stochastic& DatePlanner::annotation_of(Index atom, Index port) const {
+  return *system_.atom_types[system_.atoms[atom].type].ports[port].stochastic;
+}
+
+std::string DatePlanner::port_name(const Runtime& runtime, Index atom, Index port) const {
+  return runtime.layout().atom_names[atom] + "." +
+         system_.atom_types[system_.atoms[atom].type].ports[port].name;
 }
 
 }  // namespace smcbip::engines

@@ -132,6 +132,14 @@ class DatePlanner {
   Plan& plan_of(const Runtime& runtime, const Item& item);
   bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
                        TimeValue& date, std::string& error);
+  /// draw_stochastic's date from `distribution`, whose masses `fixed` keeps when it is the
+  /// port's fixed one (null for a distribution made for this draw).
+  bool draw_from(Runtime& runtime, Index atom, Index port, const DateDistribution& distribution,
+                 Fixed* fixed, const Interval& window, TimeValue& date, std::string& error);
+  /// The @stochastic annotation of an atom port that has one.
+  const bipc::ir::Stochastic& annotation_of(Index atom, Index port) const;
+  /// The port's name as error messages give it: "ROOT.a.p".
+  std::string port_name(const Runtime& runtime, Index atom, Index port) const;
   /// The distribution of an annotation whose parameters are all numbers, when they are valid.
   std::optional<Fixed> fixed_distribution(const bipc::ir::Stochastic& annotation) const;
   /// The annotation's distribution with `params` (its custom CDF from those loaded), or why
@@ -169,6 +177,8 @@ class DatePlanner {
   // Per atom port, flattened by atom (first_port_), whether it carries a @stochastic annotation.
   std::vector<std::size_t> first_port_;
   std::vector<std::uint8_t> stochastic_ports_;
+  // Likewise, the clock of its annotation (0 without one): read on every draw.
+  std::vector<Index> port_clocks_;
 };
 
 }  // namespace smcbip::engines

@@ -327,11 +327,6 @@ double DateDistribution::quantile(double p) const {
   return quantile_of(p, 1.0 - p);
 }
 
-double DateDistribution::inverse_of_uniform(double u) const {
-  // 1 - u is exact for u >= 1/2, the only case where it is used.
-  return quantile_of(u, 1.0 - u);
-}
-
 double DateDistribution::sample(RandomStream& random) const {
   return inverse_of_uniform(random.uniform01_open());
 }

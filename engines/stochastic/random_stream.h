@@ -29,11 +29,23 @@ constexpr std::uint64_t stream_mix(std::uint64_t z) {
 /// sequences happen to overlap still produce unrelated outputs (a counter-based design after Salmon
 /// et al., "Parallel random numbers: as easy as 1, 2, 3", SC 2011).
 class RandomStream {
+  // Arbitrary odd constants separating the uses of the mixer (run index hash, second key word).
+  static constexpr std::uint64_t kRunSalt = 0xD1B54A32D192ED03u;
+  static constexpr std::uint64_t kKeySalt = 0x8CB92BA72F3D8DD7u;
+
  public:
   using result_type = std::uint64_t;
 
-  /// The stream of run `run_index` under `seed`; equal arguments give equal streams.
-  RandomStream(std::uint64_t seed, std::uint64_t run_index);
+  /// The stream of run `run_index` under `seed`; equal arguments give equal streams. Inline:
+  /// a statistical check makes one per run, and its runs can be a few steps long.
+  RandomStream(std::uint64_t seed, std::uint64_t run_index) {
+    // For a fixed seed, k0 is a bijective function of run_index (xor with a constant, then a
+    // bijection), so two runs of one seed never share a key.
+    const std::uint64_t seed_hash = stream_mix(seed + kStreamGamma);
+    const std::uint64_t run_hash = stream_mix(run_index * kStreamGamma + kRunSalt);
+    key0_ = stream_mix(seed_hash ^ run_hash);
+    key1_ = stream_mix(key0_ ^ kKeySalt);
+  }
 
   /// The next 64 uniformly distributed bits. Inline: the draws of consecutive items do not
   /// depend on each other, so the processor can overlap them.

@@ -65,7 +65,11 @@ class QueryRuns::Observer final : public engines::RunObserver {
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
     end_ = end;
-    failure_ = end == engines::RunEnd::Error ? message : std::string();
+    if (end == engines::RunEnd::Error) {
+      failure_ = message;
+    } else {
+      failure_.clear();
+    }
     for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -427,6 +428,23 @@ TEST(DateDistribution, SamplesAreReproducible) {
   RandomStream a(6006, 17);
   RandomStream b(6006, 17);
   for (int i = 0; i < 1000; ++i) ASSERT_EQ(d.sample(a), d.sample(b));
+}
+
+// The exponential's inverse is computed inline, not through GSL: its samples must be GSL's
+// Pinv(u) below 1/2 and Qinv(1 - u) above, to the bit, as the other distributions' are.
+TEST(DateDistribution, ExponentialSamplesAreGslsInversesToTheBit) {
+  for (const double mean : {1.0, 0.03571428571428571, 5.0, 1e-300, 1e300}) {
+    const DateDistribution d = make(Distribution::Exponential, {mean});
+    RandomStream r(8008, 3);
+    for (int i = 0; i < 20000; ++i) {
+      RandomStream copy = r;
+      const double u = copy.uniform01_open();
+      const double gsl = u <= 1.0 - u ? gsl_cdf_exponential_Pinv(u, mean)
+                                      : gsl_cdf_exponential_Qinv(1.0 - u, mean);
+      const double x = d.sample(r);
+      ASSERT_EQ(std::memcmp(&x, &gsl, sizeof x), 0) << "mean " << mean << ", u = " << u;
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "smc/smc.h"
 #include "tests/engines/lock_model.h"
@@ -108,6 +110,34 @@ TEST(Check, AFiredStochasticPortDrawsANewDate) {
         EXPECT_LT(dates.dates[i - 1], dates.dates[i]) << "run " << run << ", step " << i;
       }
     }
+  }
+}
+
+TEST(Check, RunsOfOneSimulatorAreThoseOfFreshOnes) {
+  // A simulator's later runs on the compiled step path start from a copy of its first run's
+  // initial state: each must fire at the dates of the same run made by a new simulator, whose
+  // run starts with the model's initial actions, and by the reference engine.
+  const auto simulator = [](engines::EngineKind engine) {
+    engines::SimulateOptions options;
+    options.engine = engine;
+    options.seed = 3;
+    options.silent = true;
+    options.limit = 300;  // the queues never empty for good: runs end at a step limit
+    return std::make_unique<engines::Simulator>(model("tandem.bip"), options,
+                                                engines::Externs::with_builtins());
+  };
+  const auto dates = [](engines::Simulator& simulator, std::uint64_t run) {
+    std::ostringstream sink;
+    Dates observed;
+    simulator.run(run, engines::RunStreams{sink, sink}, &observed);
+    return observed.dates;
+  };
+  const auto reused = simulator(engines::EngineKind::Optimised);
+  for (std::uint64_t run = 0; run < 20; ++run) {
+    const std::vector<engines::TimeValue> seen = dates(*reused, run);
+    ASSERT_EQ(seen.size(), 301u) << "the initial state and 300 steps";
+    EXPECT_EQ(seen, dates(*simulator(engines::EngineKind::Optimised), run)) << "run " << run;
+    EXPECT_EQ(seen, dates(*simulator(engines::EngineKind::Reference), run)) << "run " << run;
   }
 }
 
