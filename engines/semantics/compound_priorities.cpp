@@ -232,14 +232,17 @@ void CompoundPriorities::dominate(InteractionValue& value, const std::vector<Pri
 void CompoundPriorities::recompute(Index k) {
   cache_.clear_time_dependent(k);
   const IndexList& values = connector_values_[k];
-  for (Index v : values) values_[v].after = values_[v].raw;
+  // Read through one pointer (values_ is the owner's, so each access would load it again);
+  // only until apply, which may compute a connector and so grow values_.
+  InteractionValue* const all = values_.data();
+  for (Index v : values) all[v].after = all[v].raw;
   // A lone value without priority rules has nothing above it: it stays as it is.
   const bool alone = values.size() == 1 && !cache_.ruled(k);
   bool urgent = false;
   for (Index v : values) {
     if (!alone) apply(values_[v], k);
-    urgent =
-        urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
+    const InteractionValue& value = values_[v];
+    urgent = urgent || (value.raw.urgency != Urgency::Lazy && !value.after.interval.empty());
   }
   cache_.set_urgent(k, urgent);
   // A stale connector's binders are all stale already (ConnectorCache::begin).

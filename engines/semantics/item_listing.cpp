@@ -35,8 +35,7 @@ ItemListing::ItemListing(const bipc::ir::System& system, const Layout& layout,
   if (counts_) item_index_.reset(layout_.listed_connectors.size() + layout_.internal_ports.size());
 }
 
-void ItemListing::count_connector(Index k) {
-  if (!counts_ || listed_position_[k] == kNone) return;
+void ItemListing::count_listed(Index k) {
   std::uint32_t count = 0;
   for (Index v : connector_values_[k]) count += values_[v].after.interval.empty() ? 0 : 1;
   item_index_.set(listed_position_[k], count);

@@ -53,7 +53,10 @@ class ItemListing {
   /// No connector has values (all are computed again).
   void clear_values() { listed_with_values_.clear(); }
   /// Keeps the count of the connector's items (if listed) up to date.
-  void count_connector(Index connector);
+  void count_connector(Index connector) {
+    // Inline: without counts (most runs) no call per recomputed connector.
+    if (counts_ && listed_position_[connector] != bipc::ir::kNone) count_listed(connector);
+  }
   /// Keeps urgent_internal_ports() and the counts up to date for the internal ports of the
   /// atoms touched since the last computation (all atoms when `full`).
   void note_internal_ports(bool full, const ConnectorCache& cache);
@@ -81,6 +84,7 @@ class ItemListing {
   Item item(std::size_t k) const;
 
  private:
+  void count_listed(Index connector);
   void note_internal_port(Index internal_port);
   /// items_ from the values and offers, cut to window_.
   void list() const;
