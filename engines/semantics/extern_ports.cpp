@@ -3,15 +3,22 @@
 // is enabled and can run at or after the event's date; otherwise its policy decides: remember
 // keeps it until the port can take it, ignore drops it when it arrives, error stops the run
 // with error 6 when it arrives (the reference engine's checkExternals).
+#include "engines/semantics/extern_ports.h"
+
 #include <algorithm>
+#include <string>
 
 #include "engines/engines.h"
-#include "engines/semantics/runtime.h"
 
 namespace smcbip::engines {
 
-bool Runtime::open_extern_ports() {
-  extern_ports_.clear();
+bool ExternPorts::fail(int code, std::string message) {
+  error_ = {code, std::move(message), {}};
+  return false;
+}
+
+bool ExternPorts::open() {
+  ports_.clear();
   for (const auto& [atom, port] : layout_.extern_ports) {
     const bipc::ir::Port& p = system_.atom_types[system_.atoms[atom].type].ports[port];
     const auto found = functions_.port_classes.find(p.backend_name);
@@ -25,13 +32,13 @@ bool Runtime::open_extern_ports() {
     state.port = port;
     state.source = (*found->second)(system_.atoms[atom].path, p.name);
     state.head.values.reserve(p.data.size());
-    extern_ports_.push_back(std::move(state));
+    ports_.push_back(std::move(state));
   }
   return true;
 }
 
-void Runtime::refresh_extern_events() {
-  for (ExternPortState& e : extern_ports_) {
+void ExternPorts::refresh() {
+  for (ExternPortState& e : ports_) {
     e.expected.reset();
     e.unexpected = false;
     if (state_.resume_pending[e.atom]) continue;
@@ -40,7 +47,7 @@ void Runtime::refresh_extern_events() {
       e.exhausted = !e.has_head;
     }
     if (!e.has_head) continue;
-    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+    const bipc::ir::Port& port = port_of(e);
     const auto& offer = port_values_[port_offset_[e.atom] + e.port];
     const TimeValue at = e.head.time;
     const bool outdated = at < state_.now;
@@ -63,9 +70,9 @@ void Runtime::refresh_extern_events() {
   }
 }
 
-std::optional<TimeValue> Runtime::first_unexpected_arrival() const {
+std::optional<TimeValue> ExternPorts::first_unexpected_arrival() const {
   std::optional<TimeValue> first;
-  for (const ExternPortState& e : extern_ports_) {
+  for (const ExternPortState& e : ports_) {
     if (!e.unexpected) continue;
     const TimeValue at = std::max(e.head.time, state_.now);
     if (!first || at < *first) first = at;
@@ -73,10 +80,10 @@ std::optional<TimeValue> Runtime::first_unexpected_arrival() const {
   return first;
 }
 
-bool Runtime::receive_unexpected_events(TimeValue upto) {
-  for (ExternPortState& e : extern_ports_) {
+bool ExternPorts::receive_unexpected(TimeValue upto) {
+  for (ExternPortState& e : ports_) {
     if (!e.unexpected || std::max(e.head.time, state_.now) > upto) continue;
-    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+    const bipc::ir::Port& port = port_of(e);
     if (port.policy == bipc::ExternPolicy::Ignore) {
       e.has_head = false;
       e.unexpected = false;
@@ -98,21 +105,21 @@ bool Runtime::receive_unexpected_events(TimeValue upto) {
   return true;
 }
 
-bool Runtime::fire_extern(const Item& item) {
-  for (ExternPortState& e : extern_ports_) {
-    if (e.atom != item.atom || e.port != item.port) continue;
-    const bipc::ir::Port& port = system_.atom_types[system_.atoms[e.atom].type].ports[e.port];
+bool ExternPorts::take_event(Index atom, Index port) {
+  for (ExternPortState& e : ports_) {
+    if (e.atom != atom || e.port != port) continue;
+    const bipc::ir::Port& p = port_of(e);
     Val* data = state_.data.data() + layout_.atom_data[e.atom];
-    const std::size_t n = std::min(port.data.size(), e.head.values.size());
-    for (std::size_t i = 0; i < n; ++i) data[port.data[i]] = e.head.values[i];
+    const std::size_t n = std::min(p.data.size(), e.head.values.size());
+    for (std::size_t i = 0; i < n; ++i) data[p.data[i]] = e.head.values[i];
     e.has_head = false;
-    return fire_port(e.atom, e.port);
+    return true;
   }
-  return true;
+  return false;
 }
 
-void Runtime::wake_extern_port(Index atom, Index port) {
-  for (ExternPortState& e : extern_ports_) {
+void ExternPorts::wake(Index atom, Index port) {
+  for (ExternPortState& e : ports_) {
     if (e.atom == atom && e.port == port) e.exhausted = false;
   }
 }

@@ -40,7 +40,7 @@ struct alignas(64) ThreadEvaluator {
   CallContext call;
   std::unique_ptr<ModelCode> eval;
   std::vector<Val> data;
-  AtomPriorityBuffers priorities;
+  AtomPriorities priorities;
 };
 
 /// The state of the multithread scheduler inside a Runtime.

@@ -1,10 +1,10 @@
-// The BIP semantics of one run: atom offers, timing constraints, the items of a state, and
-// execution (connector interactions: runtime_connectors.cpp; priorities: runtime_priorities.cpp).
-// Follows the Verimag reference engine.
+// The BIP semantics of one run: atom offers, timing constraints and execution. Connector
+// interactions: runtime_connectors.cpp; priorities: compound_priorities.cpp and
+// atom_priorities.cpp; items: item_listing.cpp; extern ports: extern_ports.cpp; traces:
+// runtime_trace.cpp. Follows the Verimag reference engine.
 #include "engines/semantics/runtime.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "bipc/ir/clock_guard.h"
 #include "engines/engines.h"
@@ -34,7 +34,12 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
       eval_(*code_),
       options_(options),
       maximal_progress_(options.maximal_progress),
-      cache_(system_, layout) {
+      cache_(system_, layout),
+      extern_ports_(system_, layout, functions, state_, port_values_, port_offset_, error_),
+      listing_(system_, layout, state_, values_, connector_values_, port_values_, port_offset_,
+               extern_ports_, options.incremental),
+      priorities_(system_, layout, options.maximal_progress, eval_, state_, error_, values_,
+                  connector_values_, cache_, time_bound_, &Runtime::compute_connector_of, this) {
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
     for (const bipc::ir::Port& port : system_.atom_types[system_.atoms[a].type].ports) {
@@ -55,7 +60,6 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
   bounding_atoms_.reset(system_.atoms.size());
   resuming_atoms_.reset(system_.atoms.size());
-  index_listing();
   index_single_atom_ports();
   index_required_offers();
   index_direct_connectors();
@@ -124,7 +128,7 @@ bool Runtime::initialize() {
   state_.resume_pending.assign(system_.atoms.size(), 0);
   state_.resume_interval.assign(system_.atoms.size(), Interval::all());
   for (std::optional<AtomPortValue>& offer : port_values_) offer.reset();
-  if (!open_extern_ports()) return false;
+  if (!extern_ports_.open()) return false;
   for (Index a = 0; a < system_.atoms.size(); ++a) note_time_bound(a);
   try {
     for (Index a = 0; a < system_.atoms.size(); ++a) {
@@ -161,7 +165,7 @@ bool Runtime::initialize() {
   } catch (const CodeFault& fault) {
     return fail(fault);
   }
-  return check_compound_priority_cycles();
+  return priorities_.check_cycles();
 }
 
 bool Runtime::check_invariants(const AtomScratch& s, Index atom) {
@@ -279,115 +283,16 @@ bool Runtime::non_deterministic_offers(const AtomScratch& s, Index atom, Index p
 
 bool Runtime::apply_atom_priorities(const AtomScratch& s, Index atom, const Frame& f) {
   const AtomType& type = system_.atom_types[system_.atoms[atom].type];
-  std::optional<AtomPortValue>* values = port_values_.data() + port_offset_[atom];
-  if (!check_atom_priority_cycle(s, atom)) return false;
-  // A port is disabled when a chain of active rules from it ends at an enabled port.
-  AtomPriorityBuffers& b = *s.priorities;
-  const std::size_t n = type.ports.size();
-  const std::size_t rules = type.priorities.size();
-  b.active.assign(rules, 0);
-  for (std::size_t r = 0; r < rules; ++r) b.active[r] = s.eval.holds(type.priorities[r].guard, f);
-  auto in_low = [&](std::size_t r, std::size_t p) {
-    const auto& rule = type.priorities[r];
-    return rule.low == kNone ? rule.high != p : rule.low == p;
-  };
-  auto in_high = [&](std::size_t r, std::size_t p) {
-    const auto& rule = type.priorities[r];
-    return rule.high == kNone ? rule.low != p : rule.high == p;
-  };
-  auto high_enabled = [&](std::size_t r) {
-    for (std::size_t q = 0; q < n; ++q) {
-      if (in_high(r, q) && values[q] && !type.ports[q].is_extern) return true;
-    }
-    return false;
-  };
-  b.disabled.assign(n, 0);
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!values[p] || type.ports[p].is_extern) continue;
-    b.seen.assign(rules, 0);
-    b.chain_ends.clear();
-    for (std::size_t r = 0; r < rules; ++r) {
-      if (b.active[r] && in_low(r, p)) {
-        b.seen[r] = 1;
-        b.chain_ends.push_back(r);
-      }
-    }
-    while (!b.chain_ends.empty() && !b.disabled[p]) {
-      const std::size_t r = b.chain_ends.back();
-      b.chain_ends.pop_back();
-      if (high_enabled(r)) {
-        b.disabled[p] = 1;
-        break;
-      }
-      for (std::size_t r2 = 0; r2 < rules; ++r2) {
-        if (b.seen[r2] || !b.active[r2]) continue;
-        bool chained = false;
-        for (std::size_t q = 0; q < n && !chained; ++q) chained = in_high(r, q) && in_low(r2, q);
-        if (chained) {
-          b.seen[r2] = 1;
-          b.chain_ends.push_back(r2);
-        }
-      }
-    }
-  }
-  for (std::size_t p = 0; p < n; ++p) {
-    if (b.disabled[p]) values[p].reset();
-  }
-  return true;
-}
-
-bool Runtime::check_atom_priority_cycle(const AtomScratch& s, Index atom) {
-  const AtomType& type = system_.atom_types[system_.atoms[atom].type];
-  const std::size_t rules = type.priorities.size();
-  const std::size_t n = type.ports.size();
-  const Frame f = atom_frame(s, atom);
-  AtomPriorityBuffers& b = *s.priorities;
-  b.active.assign(rules, 0);
-  for (std::size_t r = 0; r < rules; ++r) b.active[r] = s.eval.holds(type.priorities[r].guard, f);
-  auto chained = [&](std::size_t r, std::size_t r2) {
-    const auto& x = type.priorities[r];
-    const auto& y = type.priorities[r2];
-    for (std::size_t q = 0; q < n; ++q) {
-      const bool high = x.high == kNone ? x.low != q : x.high == q;
-      const bool low = y.low == kNone ? y.high != q : y.low == q;
-      if (high && low) return true;
-    }
-    return false;
-  };
-  // Depth-first search for a cycle among active rules (colours: 0 new, 1 on path, 2 done), on
-  // an explicit path of (rule, next rule to try).
-  b.colour.assign(rules, 0);
-  for (std::size_t root = 0; root < rules; ++root) {
-    if (!b.active[root] || b.colour[root] != 0) continue;
-    b.colour[root] = 1;
-    b.path.assign(1, {root, 0});
-    while (!b.path.empty()) {
-      const std::size_t r = b.path.back().first;
-      std::size_t& next = b.path.back().second;
-      while (next < rules && (!b.active[next] || !chained(r, next))) ++next;
-      if (next == rules) {
-        b.colour[r] = 2;
-        b.path.pop_back();
-        continue;
-      }
-      const std::size_t r2 = next++;
-      if (b.colour[r2] == 1) return s.fail(4, "cycle in priorities! ()");
-      if (b.colour[r2] == 0) {
-        b.colour[r2] = 1;
-        b.path.emplace_back(r2, 0);
-      }
-    }
-  }
-  return true;
+  if (s.priorities->apply(type, s.eval, f, port_values_.data() + port_offset_[atom])) return true;
+  return s.fail(4, "cycle in priorities! ()");
 }
 
 bool Runtime::compute_items() {
-  items_.clear();
-  items_listed_ = true;
+  listing_.begin();
   time_bound_ = time_bound();
-  if (!check_compound_priority_cycles()) return false;
+  if (!priorities_.check_cycles()) return false;
   const bool full = !options_.incremental || cache_.all_stale();
-  note_internal_ports(full);
+  listing_.note_internal_ports(full, cache_);
   begin_values(full);
   try {
     compute_values(full);
@@ -399,63 +304,9 @@ bool Runtime::compute_items() {
     return fail(kInputError, unsupported.message);
   }
   cache_.end();
-  refresh_extern_events();
-  items_window_ = wait_interval();
-  items_listed_ = false;
-  if (!counts_items_) list_items();
+  extern_ports_.refresh();
+  listing_.end(wait_interval());
   return true;
-}
-
-bool Runtime::cut_item(const Constraint& c, Item& item) const {
-  Interval in = c.interval;
-  narrow(in, items_window_);
-  if (in.empty()) return false;
-  // Fields are copied one by one: building an Item or an Interval in memory and copying it as
-  // a whole stalled on store forwarding, which cost more than the rest of an optimised step.
-  item.constraint.interval.left = in.left;
-  item.constraint.interval.right = in.right;
-  item.constraint.interval.left_open = in.left_open;
-  item.constraint.interval.right_open = in.right_open;
-  item.constraint.urgency = c.urgency;
-  item.offered = c;
-  return true;
-}
-
-void Runtime::list_items() const {
-  // Items with their windows cut to the admissible waiting interval.
-  items_.clear();
-  items_listed_ = true;
-  auto add = [&](const Constraint& c) -> Item* {
-    Item& item = items_.emplace_back();
-    if (cut_item(c, item)) return &item;
-    items_.pop_back();
-    return nullptr;
-  };
-  listed_with_values_.for_each([&](std::size_t position) {
-    for (Index v : connector_values_[layout_.listed_connectors[position]]) {
-      const Constraint& after = values_[v].after;
-      if (after.interval.empty()) continue;
-      if (Item* item = add(after)) item->value = v;
-    }
-  });
-  for (const auto& [atom, port] : layout_.internal_ports) {
-    if (state_.resume_pending[atom]) continue;
-    const auto& v = port_values_[port_offset_[atom] + port];
-    if (!v) continue;
-    if (Item* item = add(v->constraint)) {
-      item->kind = Item::Kind::Internal;
-      item->atom = atom;
-      item->port = port;
-    }
-  }
-  for (const ExternPortState& e : extern_ports_) {
-    if (!e.expected) continue;
-    if (Item* item = add(*e.expected)) {
-      item->kind = Item::Kind::External;
-      item->atom = e.atom;
-      item->port = e.port;
-    }
-  }
 }
 
 Interval Runtime::wait_interval() const {
@@ -463,18 +314,18 @@ Interval Runtime::wait_interval() const {
   // the urgent connectors and internal ports are visited. Intersections: order-free.
   Interval w = Interval::from(state_.now);
   for (Index k : cache_.urgent()) {
-    if (listed_position_[k] == kNone) continue;
+    if (listing_.listed_position(k) == kNone) continue;
     for (Index v : connector_values_[k]) {
       const InteractionValue& value = values_[v];
       if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
       narrow(w, wait(value.raw, state_.now));
     }
   }
-  for (Index i : urgent_internal_ports_) {
+  for (Index i : listing_.urgent_internal_ports()) {
     const auto& [atom, port] = layout_.internal_ports[i];
     narrow(w, wait(port_values_[port_offset_[atom] + port]->constraint, state_.now));
   }
-  for (const ExternPortState& e : extern_ports_) {
+  for (const ExternPortState& e : extern_ports_.ports()) {
     if (e.expected) narrow(w, wait(*e.expected, state_.now));
   }
   return w.intersect(time_bound());
@@ -575,6 +426,16 @@ bool Runtime::execute(const Item& item, TimeValue at) {
   }
 }
 
+bool Runtime::fire_extern(const Item& item) {
+  return !extern_ports_.take_event(item.atom, item.port) || fire_port(item.atom, item.port);
+}
+
+bool Runtime::receive_unexpected_events(TimeValue upto) {
+  return extern_ports_.receive_unexpected(upto);
+}
+
+void Runtime::wake_extern_port(Index atom, Index port) { extern_ports_.wake(atom, port); }
+
 bool Runtime::write_data(Index atom, Index slot, Val value) {
   state_.data[layout_.atom_data[atom] + slot] = value;
   cache_.touch_atom(atom);  // also when resuming: its connectors' code may read the data
@@ -607,92 +468,6 @@ Interval Runtime::resume_window() const {
   Interval w = Interval::all();
   for (Index a : resuming_atoms_) w = w.intersect(state_.resume_interval[a]);
   return w;
-}
-
-std::string Runtime::format_ports(const InteractionValue& value) const {
-  const bipc::ir::ConnectorInstance& connector = system_.connectors[value.connector];
-  std::string text;
-  for (const PortValue& pv : value.choice) {
-    if (!text.empty()) text += ' ';
-    text += connector.bound_names[pv.param] + "(";
-    const bipc::ir::PortType* port_type = nullptr;
-    std::vector<Val> values;
-    if (pv.from_atom) {
-      const AtomType& type = system_.atom_types[system_.atoms[pv.atom].type];
-      const bipc::ir::Port& port = type.ports[pv.port];
-      port_type = &system_.port_types[port.type];
-      for (Index slot : port.data) values.push_back(state_.data[layout_.atom_data[pv.atom] + slot]);
-    } else {
-      const InteractionValue& sub = values_[pv.sub];
-      const auto& type = system_.connector_types[system_.connectors[sub.connector].type];
-      if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
-      for (Index slot : type.export_data) values.push_back(sub.data[slot]);
-    }
-    if (port_type) {
-      for (std::size_t p = 0; p < port_type->params.size() && p < values.size(); ++p) {
-        text += port_type->params[p].first + "=" +
-                format_value(values[p], port_type->params[p].second.kind) + ";";
-      }
-    }
-    text += ")";
-  }
-  return text;
-}
-
-std::string Runtime::format_value(Val v, bipc::ir::ValueKind kind) const {
-  switch (kind) {
-    case bipc::ir::ValueKind::Bool:
-      return v.b ? "true" : "false";
-    case bipc::ir::ValueKind::Float: {
-      std::ostringstream s;
-      s << v.f;
-      return s.str();
-    }
-    case bipc::ir::ValueKind::String:
-      return strings_.text(v.s);
-    default:
-      return std::to_string(v.i);
-  }
-}
-
-}  // namespace smcbip::engines
-
-namespace smcbip::engines {
-
-std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
-  std::vector<std::string> lines;
-  auto late = [&](const Constraint& c) { return !wait(c, state_.now).contains(t); };
-  auto constraint_text = [](const Constraint& c) {
-    return format_interval(c.interval) + " " + urgency_name(c.urgency);
-  };
-  for (Index k : layout_.listed_connectors) {
-    for (Index v : connector_values_[k]) {
-      const InteractionValue& value = values_[v];
-      if (value.after.interval.empty() || !late(value.raw)) continue;
-      lines.push_back(layout_.connector_names[k] + ": " + format_ports(value) + " " +
-                      constraint_text(value.raw));
-    }
-  }
-  for (const auto& [atom, port] : layout_.internal_ports) {
-    if (state_.resume_pending[atom]) continue;
-    const auto& v = port_values_[port_offset_[atom] + port];
-    if (!v || !late(v->constraint)) continue;
-    const AtomType& type = system_.atom_types[system_.atoms[atom].type];
-    lines.push_back(layout_.atom_names[atom] + "." + type.ports[port].name + " " +
-                    constraint_text(v->constraint));
-  }
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (!state_.resume_pending[a] && !atom_invariant_[a].contains(t)) {
-      lines.push_back(layout_.atom_names[a] + " invariant " + format_interval(atom_invariant_[a]));
-    }
-  }
-  for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (state_.resume_pending[a] && !state_.resume_interval[a].contains(t)) {
-      lines.push_back(layout_.atom_names[a] + " resume " +
-                      format_interval(state_.resume_interval[a]));
-    }
-  }
-  return lines;
 }
 
 }  // namespace smcbip::engines

@@ -9,7 +9,6 @@
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -17,107 +16,18 @@
 #include "engines/externs.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/model.h"
+#include "engines/semantics/atom_priorities.h"
+#include "engines/semantics/compound_priorities.h"
 #include "engines/semantics/connector_cache.h"
+#include "engines/semantics/extern_ports.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/index_set.h"
-#include "engines/semantics/item_index.h"
+#include "engines/semantics/item_listing.h"
 #include "engines/semantics/layout.h"
-#include "engines/semantics/position_set.h"
+#include "engines/semantics/runtime_types.h"
 #include "engines/stochastic/random_stream.h"
 
 namespace smcbip::engines {
-
-/// The complete state of a run (copyable: the explorer keeps states).
-struct RunState {
-  TimeValue now = 0;
-  std::vector<Val> data;
-  std::vector<std::uint8_t> marking;
-  std::vector<ClockState> clocks;
-  std::vector<std::uint8_t> resume_pending;  // per atom
-  std::vector<Interval> resume_interval;     // per atom, absolute
-};
-
-/// One value a connector port parameter may take: an atom port's offer or one enabled
-/// interaction of a sub-connector (with that connector's data after its `up`).
-struct PortValue {
-  bool from_atom = true;
-  Index atom = 0, port = 0;     // atom offers
-  Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values_
-  Constraint constraint;
-  Index param = 0;  // the connector's port parameter this value is offered to
-};
-
-/// An enabled interaction value of a connector.
-struct InteractionValue {
-  Index connector = 0;
-  /// Index into Layout::defined[connector]; kLargest for the largest enabled interaction of a
-  /// maximal_only connector.
-  std::uint32_t defined = 0;
-  static constexpr std::uint32_t kLargest = 0xffffffffu;
-  int code = -1;                  // index into ConnectorType::interactions (guard, up, down), or -1
-  PortSet ports = 0;              // empty on connectors wider than a PortSet
-  std::vector<PortValue> choice;  // one per port parameter taking part, in declaration order
-  Constraint raw;                 // intersection of the chosen port values' constraints
-  Constraint after;               // after maximal progress and priorities
-  std::vector<Val> data;          // connector data after `up`
-};
-
-/// An item the engine may execute at a state: an interaction, an internal port, an extern port.
-struct Item {
-  enum class Kind : std::uint8_t { Interaction, Internal, External } kind = Kind::Interaction;
-  Index value = 0;           // Interaction: index into values()
-  Index atom = 0, port = 0;  // Internal / External
-  Constraint constraint;     // cut to the admissible waiting interval from now
-  Constraint offered;        // before that cut: unchanged while the item's atoms do not move
-};
-
-/// An extern port's event source and the event at the head of its queue (pulled lazily).
-struct ExternPortState {
-  Index atom = 0, port = 0;
-  std::unique_ptr<ExternPortSource> source;
-  ExternEvent head;  // when has_head; its buffer is reused from event to event
-  bool has_head = false;
-  bool exhausted = false;
-  std::optional<Constraint> expected;  // the head event's item, when its port can take it
-  bool unexpected = false;             // the head's port cannot take it (policy error, ignore)
-};
-
-/// How the semantics is computed: the schedulers share it and differ only here.
-struct RuntimeOptions {
-  bool maximal_progress = true;
-  /// Optimised scheduler: keep each connector's interactions between steps and recompute only
-  /// those of connectors whose atoms (or sub-connectors) an execution touched.
-  bool incremental = false;
-  /// Multithread scheduler: the atoms of one interaction execute on this many threads.
-  unsigned threads = 1;
-  /// Multithread scheduler: the least estimated work of an interaction's atoms, in
-  /// instructions, for which they fire in parallel (0: always; tests use it).
-  std::size_t parallel_min_work = 1000;
-};
-
-/// A run-time error of the model, with the reference engine's code and message, and where in
-/// the model's source it arose (`file:line:column`, empty when unknown).
-struct ModelError {
-  int code = 0;
-  std::string message;
-  std::string where;
-};
-
-/// A state the engines cannot compute (thrown inside compute_items, reported as an input error).
-struct UnsupportedRun {
-  std::string message;
-};
-
-/// Reusable buffers for an atom type's priority rules (Runtime::update_atom), one set per
-/// thread that fires atoms.
-struct AtomPriorityBuffers {
-  std::vector<std::uint8_t> active;    // per rule: its guard holds
-  std::vector<std::uint8_t> colour;    // per rule, in the cycle search
-  std::vector<std::uint8_t> disabled;  // per port
-  std::vector<std::uint8_t> seen;      // per rule, in the chains from one port
-  std::vector<std::size_t> chain_ends;
-  std::vector<std::pair<std::size_t, std::size_t>> path;  // cycle search: (rule, next rule)
-};
 
 struct ParallelFiring;
 
@@ -150,17 +60,14 @@ class Runtime {
 
   /// The enabled items computed by the last compute_items, valid until the next execute. The
   /// optimised scheduler lists them only when asked (see item()).
-  const std::vector<Item>& items() const {
-    if (!items_listed_) list_items();
-    return items_;
-  }
+  const std::vector<Item>& items() const { return listing_.items(); }
   /// items().size() and items()[k], without listing the items when the optimised scheduler
   /// counts them (untimed layouts): then in O(log n).
-  std::size_t item_count() const;
-  Item item(std::size_t k) const;
+  std::size_t item_count() const { return listing_.count(); }
+  Item item(std::size_t k) const { return listing_.item(k); }
   /// The waiting interval the last compute_items cut the items' windows to. With an untimed
   /// layout it is every item's window (their own constraints hold at all dates).
-  const Interval& items_window() const { return items_window_; }
+  const Interval& items_window() const { return listing_.window(); }
   /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
   /// slots, so slots no item or value refers to may hold values of earlier steps.
   const std::vector<InteractionValue>& values() const { return values_; }
@@ -176,7 +83,7 @@ class Runtime {
   std::optional<TimeValue> next_unexpected_arrival() const {
     // Inline for models without extern ports: the optional then stays in registers.
     if (extern_ports_.empty()) return std::nullopt;
-    return first_unexpected_arrival();
+    return extern_ports_.first_unexpected_arrival();
   }
   /// The unexpected events arriving until `upto` arrive: policy error stops the run with error
   /// 6, policy ignore drops them. False with error() set on error 6.
@@ -215,7 +122,7 @@ class Runtime {
     Val* atom_data = nullptr;
     /// Firing on a worker thread: the scheduler's shared bookkeeping is left to the caller.
     bool on_worker = false;
-    AtomPriorityBuffers* priorities = nullptr;  // the thread's own
+    AtomPriorities* priorities = nullptr;  // the thread's own
     bool fail(int code, std::string message, std::string where = {}) const {
       error = {code, std::move(message), std::move(where)};
       return false;
@@ -238,7 +145,6 @@ class Runtime {
   };
   // Passed by reference: a copy made on the stack per call stalled on store forwarding.
   const AtomScratch& main_scratch() const { return main_scratch_; }
-  std::optional<TimeValue> first_unexpected_arrival() const;
   Frame atom_frame(Index atom);
   Frame atom_frame(const AtomScratch& s, Index atom);
   bool update_atom(Index atom) { return update_atom(main_scratch(), atom, atom_frame(atom)); }
@@ -259,8 +165,6 @@ class Runtime {
                        const Frame& f);
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
   bool check_invariants(const AtomScratch& s, Index atom);
-  bool check_atom_priority_cycle(const AtomScratch& s, Index atom);
-  bool check_compound_priority_cycles();
   void compute_connector(Index connector);
   /// Fills required_offers_ and has_sub_connectors_.
   void index_required_offers();
@@ -312,40 +216,10 @@ class Runtime {
   /// Every connector's values, or (incremental) those of the connectors the cache finds stale.
   void compute_values(bool full);
   void compute_compound(const std::vector<Index>& connectors);
-  /// items_ from the values and offers, cut to items_window_.
-  void list_items() const;
-  /// Whether item_count and item find items through item_index_ rather than items_.
-  bool items_counted() const;
-  Item counted_item(std::size_t k) const;
-  /// The item of an enabled constraint with its window cut to items_window_; false when that
-  /// leaves nothing.
-  bool cut_item(const Constraint& c, Item& item) const;
-  /// Fills the per-connector and per-atom indices of the listing order (constructor).
-  void index_listing();
-  Item connector_item(std::size_t position, std::uint32_t rank) const;
-  Item internal_item(Index internal_port) const;
-  /// Keeps item_index_'s count of the connector's items (if listed) up to date.
-  void count_connector_items(Index connector);
-  /// Keeps urgent_internal_ports_ and item_index_ up to date for the internal ports of the
-  /// atoms touched since the last computation (all atoms when `full`).
-  void note_internal_ports(bool full);
-  void note_internal_port(Index internal_port);
+  /// The connector's values after priorities (CompoundPriorities::recompute), counted.
   void recompute_priorities(Index connector);
-  bool dominated_locally(const InteractionValue& low, const InteractionValue& high) const;
-  void apply_priorities(InteractionValue& value, Index connector_index);
-  bool rule_guard(const PriorityRule& rule);
-  /// An interaction named by a priority rule: its connector and port set.
-  using RuleNode = std::pair<Index, PortSet>;
-  bool applies_low(const PriorityRule& rule, const RuleNode& interaction) const;
-  /// The interactions of the rule's high (low) side, into `out`.
-  void high_side(const PriorityRule& rule, std::vector<RuleNode>& out) const;
-  void low_side(const PriorityRule& rule, std::vector<RuleNode>& out) const;
-  /// Restricts `value` by the dominators of every high side reached from `low` through active
-  /// rules of `rules` (apply_priorities; `depth`: of this recursion).
-  void dominate(InteractionValue& value, const std::vector<PriorityRule>& rules,
-                const RuleNode& low, std::size_t depth);
-  void add_defined(Index connector, std::vector<RuleNode>& out) const;
-  void restrict_by(Constraint& c, const Constraint& dominator) const;
+  /// compute_connector for CompoundPriorities.
+  static void compute_connector_of(void* runtime, Index connector);
   /// The atoms' clock invariants and pending resume windows intersected: time cannot pass
   /// beyond it whatever is chosen.
   Interval time_bound() const;
@@ -355,6 +229,13 @@ class Runtime {
   /// execute_value, with the atoms fired on the thread pool when that is observably the same
   /// (runtime_parallel.cpp).
   bool execute_value_in_parallel(Index value);
+  /// Whether the atoms of the value fire on the thread pool (parallel_->ports: its atom ports).
+  bool fires_in_parallel(Index value);
+  /// The connectors' downs of the value, in the reference order: the number of its atom ports
+  /// before the first down that faults (then in `fault`), else all of them.
+  std::size_t run_downs(Index value, std::optional<CodeFault>& fault);
+  /// Fires the first `count` atom ports of parallel_->ports on the pool; false with error() set.
+  bool fire_ports_in_parallel(std::size_t count);
   bool fire_port(Index atom, Index port) { return fire_port(main_scratch(), atom, port); }
   bool fire_port(const AtomScratch& s, Index atom, Index port);
   bool fail(int code, std::string message);
@@ -364,9 +245,6 @@ class Runtime {
   /// `file:line:column` of a source location of the model; empty when unknown.
   std::string where(const bipc::Location& at) const;
   void append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const;
-  bool open_extern_ports();
-  /// Pulls the extern ports' next events and decides which ports take theirs (expected).
-  void refresh_extern_events();
   bool fire_extern(const Item& item);
   /// Keeps bounding_atoms_ and resuming_atoms_ up to date after the atom's resume state or
   /// invariant changed.
@@ -385,8 +263,8 @@ class Runtime {
   bool maximal_progress_;
   RunState state_;
   ModelError error_;
-  AtomPriorityBuffers priority_buffers_;
-  const AtomScratch main_scratch_{eval_, error_, nullptr, false, &priority_buffers_};
+  AtomPriorities atom_priorities_;  // the main thread's
+  const AtomScratch main_scratch_{eval_, error_, nullptr, false, &atom_priorities_};
   // Per atom: where its slots are (atom_frame).
   struct AtomSlots {
     std::size_t data = 0;
@@ -411,10 +289,6 @@ class Runtime {
   // leave wait_interval as it is), and those with a pending resume.
   IndexSet bounding_atoms_, resuming_atoms_;
   std::vector<Index> resume_order_;  // resume_atoms' buffer
-  // Internal ports (indices into layout_.internal_ports) offered with an urgent constraint, as
-  // of the last compute_items; per atom, its internal ports.
-  IndexSet urgent_internal_ports_;
-  std::vector<std::vector<Index>> internal_ports_of_;
   // Per connector: enabled interaction values (indices into values_), computed bottom up. The
   // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
   // listed in free_values_.
@@ -426,8 +300,6 @@ class Runtime {
     std::size_t offer = 0;  // index into port_values_
   };
   std::vector<std::vector<SingleAtomPort>> single_atom_ports_;
-  // The listed connectors that have values, by position in layout_.listed_connectors.
-  PositionSet listed_with_values_;
   // Per connector: the atom ports bound to its port parameters that every defined interaction
   // contains (parameters binding atom ports only), parameter by parameter; and whether a
   // parameter binds a sub-connector.
@@ -443,21 +315,9 @@ class Runtime {
   std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
   std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
-  // Listed lazily (see items()): the optimised scheduler on an untimed layout counts the items
-  // in item_index_ (positions: listed connectors, then internal ports) instead.
-  mutable std::vector<Item> items_;
-  mutable bool items_listed_ = true;
-  bool counts_items_ = false;
-  ItemIndex item_index_;
-  std::vector<Index> listed_position_;  // per connector: index in listed_connectors, or kNone
-  Interval items_window_;               // see items_window()
-  std::vector<ExternPortState> extern_ports_;  // in layout_.extern_ports order
-  // Per compound: the sets of active priority rules already found free of cycles.
-  std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
-  std::vector<bool> active_rules_;  // check_compound_priority_cycles' buffer
-  // apply_priorities' buffers: the rule nodes visited (sorted), the high sides per depth.
-  std::vector<RuleNode> visited_rule_nodes_;
-  std::deque<std::vector<RuleNode>> high_sides_;
+  ExternPorts extern_ports_;
+  ItemListing listing_;
+  CompoundPriorities priorities_;
   // Multithread scheduler only (threads > 1): the pool and per-thread evaluators.
   std::unique_ptr<ParallelFiring> parallel_;
 };

@@ -85,6 +85,15 @@ void Runtime::compute_sub_connectors(Index k) {
   }
 }
 
+void Runtime::compute_connector_of(void* runtime, Index k) {
+  static_cast<Runtime*>(runtime)->compute_connector(k);
+}
+
+void Runtime::recompute_priorities(Index k) {
+  priorities_.recompute(k);
+  listing_.count_connector(k);
+}
+
 void Runtime::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   release_values(k);
@@ -107,7 +116,7 @@ void Runtime::release_values(Index k) {
   if (connector_values_[k].empty()) return;
   for (Index v : connector_values_[k]) free_values_.push_back(v);
   connector_values_[k].clear();
-  if (listed_position_[k] != kNone) listed_with_values_.erase(listed_position_[k]);
+  listing_.note_no_values(k);
 }
 
 bool Runtime::tries_largest(Index k) const {
@@ -290,7 +299,7 @@ void Runtime::keep_value_if_allowed(Index k, Index slot) {
   if (!value.raw.interval.empty() && connector_code_allows(value)) {
     value.after = value.raw;
     connector_values_[k].push_back(slot);
-    if (listed_position_[k] != kNone) listed_with_values_.insert(listed_position_[k]);
+    listing_.note_values(k);
   } else {
     free_values_.push_back(slot);
   }
@@ -319,7 +328,7 @@ void Runtime::begin_values(bool full) {
     for (Index v = static_cast<Index>(values_.size()); v-- > 0;) free_values_.push_back(v);
     connector_values_.resize(system_.connectors.size());
     for (IndexList& list : connector_values_) list.clear();
-    listed_with_values_.clear();
+    listing_.clear_values();
   }
   cache_.begin(state_.now, full, [this](Index k) { return keeps_no_values(k); });
 }

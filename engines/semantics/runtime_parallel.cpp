@@ -79,7 +79,7 @@ ParallelFiring::ParallelFiring(const Model& model, const BoundFunctions& functio
 
 Runtime::~Runtime() = default;
 
-bool Runtime::execute_value_in_parallel(Index index) {
+bool Runtime::fires_in_parallel(Index index) {
   ParallelFiring& p = *parallel_;
   p.ports.clear();
   append_value_ports(index, p.ports);
@@ -96,14 +96,14 @@ bool Runtime::execute_value_in_parallel(Index index) {
     p.seen[atom] = p.execution;
     work += p.cost[type];
   }
-  if (!parallel || work < options_.parallel_min_work) return execute_value(index);
+  return parallel && work >= options_.parallel_min_work;
+}
 
-  // The downs first, in the reference order. A down only writes its own connector's data and
-  // the port data of atoms below it, which the atoms fired before it in the reference order
-  // never read, so running the downs early changes no value. A down that faults stops the
-  // reference engine after the atoms before it: only those fire, and their errors come first.
-  std::size_t before_fault = p.ports.size();
-  std::optional<CodeFault> fault;
+std::size_t Runtime::run_downs(Index index, std::optional<CodeFault>& fault) {
+  // A down only writes its own connector's data and the port data of atoms below it, which the
+  // atoms fired before it in the reference order never read, so running the downs early changes
+  // no value. A down that faults stops the reference engine after the atoms before it: only
+  // those fire, and their errors come first.
   std::size_t atoms_so_far = 0;
   std::function<void(Index)> downs = [&](Index value) {
     run_down(value);
@@ -119,10 +119,13 @@ bool Runtime::execute_value_in_parallel(Index index) {
     downs(index);
   } catch (const CodeFault& f) {
     fault = f;
-    before_fault = atoms_so_far;
+    return atoms_so_far;
   }
+  return parallel_->ports.size();
+}
 
-  const std::size_t count = before_fault;
+bool Runtime::fire_ports_in_parallel(std::size_t count) {
+  ParallelFiring& p = *parallel_;
   p.fired.assign(count, 0);
   p.errors.resize(count);
   auto fire = [&](std::size_t i, unsigned thread) {
@@ -152,6 +155,15 @@ bool Runtime::execute_value_in_parallel(Index index) {
       return false;
     }
   }
+  return true;
+}
+
+bool Runtime::execute_value_in_parallel(Index index) {
+  if (!fires_in_parallel(index)) return execute_value(index);
+  // The downs first, in the reference order; then the atoms before the first faulty down.
+  std::optional<CodeFault> fault;
+  const std::size_t count = run_downs(index, fault);
+  if (!fire_ports_in_parallel(count)) return false;
   if (fault) return fail(*fault);
   return true;
 }

@@ -1,7 +1,9 @@
 // Priorities of one run: the compound priority rules (their closure and cycle check) and
 // maximal progress, applied to the connectors' interaction values.
+#include "engines/semantics/compound_priorities.h"
+
 #include <algorithm>
-#include <functional>
+#include <bit>
 
 #include "engines/semantics/detail/runtime_shared.h"
 
@@ -12,11 +14,16 @@ using bipc::ir::kNone;
 using detail::subset;
 using detail::wait;
 
-bool Runtime::rule_guard(const PriorityRule& rule) {
+Val* CompoundPriorities::instance_slot(const void* context, Index atom, std::uint16_t slot) {
+  const auto& p = *static_cast<const CompoundPriorities*>(context);
+  return &p.state_.data[p.layout_.atom_data[atom] + slot];
+}
+
+bool CompoundPriorities::rule_guard(const PriorityRule& rule) {
   const bipc::ir::Priority& p = system_.compounds[rule.compound].priorities[rule.rule];
   if (p.guard.empty()) return true;
   Frame f;
-  f.instance_slot = &RuntimeDetail::instance_slot;
+  f.instance_slot = &CompoundPriorities::instance_slot;
   f.instance_context = this;
   f.now = state_.now;
   return eval_.holds(p.guard, f);
@@ -35,7 +42,7 @@ std::string interaction_name(const bipc::ir::System& system, Index connector, Po
 
 }  // namespace
 
-bool Runtime::applies_low(const PriorityRule& rule, const RuleNode& x) const {
+bool CompoundPriorities::applies_low(const PriorityRule& rule, const RuleNode& x) const {
   if (rule.low_connector == kNone) {
     return layout_.top_level[x.first] && x.first != rule.high_connector;
   }
@@ -43,12 +50,12 @@ bool Runtime::applies_low(const PriorityRule& rule, const RuleNode& x) const {
          (x.second == rule.low || (maximal_progress_ && subset(x.second, rule.low)));
 }
 
-void Runtime::add_defined(Index connector, std::vector<RuleNode>& out) const {
+void CompoundPriorities::add_defined(Index connector, std::vector<RuleNode>& out) const {
   for (const DefinedInteraction& d : layout_.defined[connector])
     out.push_back({connector, d.ports});
 }
 
-void Runtime::high_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
+void CompoundPriorities::high_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
   out.clear();
   if (rule.high_connector == kNone) {
     for (Index k : system_.compounds[rule.compound].connectors) {
@@ -61,7 +68,7 @@ void Runtime::high_side(const PriorityRule& rule, std::vector<RuleNode>& out) co
   }
 }
 
-void Runtime::low_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
+void CompoundPriorities::low_side(const PriorityRule& rule, std::vector<RuleNode>& out) const {
   out.clear();
   if (rule.low_connector != kNone) {
     out.push_back({rule.low_connector, rule.low});
@@ -72,7 +79,36 @@ void Runtime::low_side(const PriorityRule& rule, std::vector<RuleNode>& out) con
   }
 }
 
-bool Runtime::check_compound_priority_cycles() {
+bool CompoundPriorities::find_cycle(const std::vector<PriorityRule>& rules,
+                                    const std::vector<RuleNode>& path, int depth,
+                                    std::vector<RuleNode>& cycle) {
+  // Depth-first over the static rule chains from a low side (E/Interaction.cpp of the reference
+  // engine): a high side included in an interaction already on the path closes a cycle.
+  if (depth > 64) return false;
+  const RuleNode x = path.back();
+  std::vector<RuleNode> highs;
+  for (std::size_t r = 0; r < rules.size(); ++r) {
+    if (!active_rules_[r] || !applies_low(rules[r], x)) continue;
+    const RuleNode own_low{rules[r].low_connector, rules[r].low};
+    high_side(rules[r], highs);
+    for (const RuleNode& d : highs) {
+      std::vector<RuleNode> next = path;
+      if (rules[r].low_connector != kNone && x != own_low) next.push_back(own_low);
+      next.push_back(d);
+      for (std::size_t i = 0; i + 1 < next.size(); ++i) {
+        if (next[i].first == d.first && subset(d.second, next[i].second)) {
+          cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
+          if (d != next[i]) cycle.push_back(next[i]);
+          return true;
+        }
+      }
+      if (find_cycle(rules, next, depth + 1, cycle)) return true;
+    }
+  }
+  return false;
+}
+
+bool CompoundPriorities::check_cycles() {
   if (layout_.ruled_compounds.empty()) return true;
   acyclic_rule_sets_.resize(layout_.rules.size());
   for (const Index compound : layout_.ruled_compounds) {
@@ -82,46 +118,18 @@ bool Runtime::check_compound_priority_cycles() {
     for (std::size_t r = 0; r < rules.size(); ++r) active[r] = rule_guard(rules[r]);
     // The search depends only on which rules are active: a set found acyclic stays so.
     if (acyclic_rule_sets_[compound].count(active)) continue;
-    // Depth-first over the static rule chains from each low side (E/Interaction.cpp of the
-    // reference engine): a high side included in an interaction already on the path closes
-    // a cycle.
-    std::vector<RuleNode> cycle;
-    std::function<bool(const std::vector<RuleNode>&, int)> search =
-        [&](const std::vector<RuleNode>& path, int depth) {
-          if (depth > 64) return false;
-          const RuleNode x = path.back();
-          for (std::size_t r = 0; r < rules.size(); ++r) {
-            if (!active[r] || !applies_low(rules[r], x)) continue;
-            const RuleNode own_low{rules[r].low_connector, rules[r].low};
-            std::vector<RuleNode> highs;
-            high_side(rules[r], highs);
-            for (const RuleNode& d : highs) {
-              std::vector<RuleNode> next = path;
-              if (rules[r].low_connector != kNone && x != own_low) next.push_back(own_low);
-              next.push_back(d);
-              for (std::size_t i = 0; i + 1 < next.size(); ++i) {
-                if (next[i].first == d.first && subset(d.second, next[i].second)) {
-                  cycle.assign(next.begin() + static_cast<std::ptrdiff_t>(i), next.end());
-                  if (d != next[i]) cycle.push_back(next[i]);
-                  return true;
-                }
-              }
-              if (search(next, depth + 1)) return true;
-            }
-          }
-          return false;
-        };
-    std::vector<RuleNode> lows;
+    std::vector<RuleNode> cycle, lows;
     for (std::size_t r = 0; r < rules.size(); ++r) {
       if (!active[r]) continue;
       low_side(rules[r], lows);
       for (const RuleNode& low : lows) {
-        if (!search({low}, 0)) continue;
+        if (!find_cycle(rules, {low}, 0, cycle)) continue;
         std::string text;
         for (std::size_t i = 0; i < cycle.size(); ++i) {
           text += (i ? " < " : "") + interaction_name(system_, cycle[i].first, cycle[i].second);
         }
-        return fail(3, "cycle in priorities! (" + text + ")");
+        error_ = {3, "cycle in priorities! (" + text + ")", {}};
+        return false;
       }
     }
     acyclic_rule_sets_[compound].insert(active);
@@ -129,7 +137,7 @@ bool Runtime::check_compound_priority_cycles() {
   return true;
 }
 
-void Runtime::restrict_by(Constraint& c, const Constraint& dominator) const {
+void CompoundPriorities::restrict_by(Constraint& c, const Constraint& dominator) const {
   // A dominated value may only run where its dominator cannot (TimingConstraint::applyPriority
   // of the reference engine): after the dominator's window if that meets the waiting window,
   // else before it. Invariants and pending resumes bound the waiting window too: a dominator
@@ -156,7 +164,8 @@ void Runtime::restrict_by(Constraint& c, const Constraint& dominator) const {
   c.interval = c.interval.intersect(allowed);
 }
 
-bool Runtime::dominated_locally(const InteractionValue& low, const InteractionValue& high) const {
+bool CompoundPriorities::dominated_locally(const InteractionValue& low,
+                                           const InteractionValue& high) const {
   // low <= high: port set inclusion, and for each sub-connector port of low, its
   // sub-interaction included in high's.
   if (!subset(low.ports, high.ports)) return false;
@@ -173,7 +182,7 @@ bool Runtime::dominated_locally(const InteractionValue& low, const InteractionVa
   return true;
 }
 
-void Runtime::apply_priorities(InteractionValue& value, Index k) {
+void CompoundPriorities::apply(InteractionValue& value, Index k) {
   // Maximal progress: every enabled value of the same connector strictly above this one.
   if (maximal_progress_) {
     for (Index w : connector_values_[k]) {
@@ -193,8 +202,8 @@ void Runtime::apply_priorities(InteractionValue& value, Index k) {
   dominate(value, rules, {k, value.ports}, 0);
 }
 
-void Runtime::dominate(InteractionValue& value, const std::vector<PriorityRule>& rules,
-                       const RuleNode& low, std::size_t depth) {
+void CompoundPriorities::dominate(InteractionValue& value, const std::vector<PriorityRule>& rules,
+                                  const RuleNode& low, std::size_t depth) {
   // Visited nodes: a sorted vector, which keeps its capacity from value to value.
   const auto at = std::lower_bound(visited_rule_nodes_.begin(), visited_rule_nodes_.end(), low);
   if (at != visited_rule_nodes_.end() && *at == low) return;
@@ -208,7 +217,7 @@ void Runtime::dominate(InteractionValue& value, const std::vector<PriorityRule>&
     if (!applies_low(rule, low) || !rule_guard(rule)) continue;
     high_side(rule, highs);
     for (const RuleNode& high : highs) {
-      compute_connector(high.first);
+      compute_(compute_context_, high.first);
       for (Index w : connector_values_[high.first]) {
         const InteractionValue& other = values_[w];
         if (other.ports == high.second || (maximal_progress_ && subset(high.second, other.ports))) {
@@ -220,22 +229,24 @@ void Runtime::dominate(InteractionValue& value, const std::vector<PriorityRule>&
   }
 }
 
-void Runtime::recompute_priorities(Index k) {
+void CompoundPriorities::recompute(Index k) {
   cache_.clear_time_dependent(k);
   const IndexList& values = connector_values_[k];
-  for (Index v : values) values_[v].after = values_[v].raw;
+  // Read through one pointer (values_ is the owner's, so each access would load it again);
+  // only until apply, which may compute a connector and so grow values_.
+  InteractionValue* const all = values_.data();
+  for (Index v : values) all[v].after = all[v].raw;
   // A lone value without priority rules has nothing above it: it stays as it is.
   const bool alone = values.size() == 1 && !cache_.ruled(k);
   bool urgent = false;
   for (Index v : values) {
-    if (!alone) apply_priorities(values_[v], k);
-    urgent =
-        urgent || (values_[v].raw.urgency != Urgency::Lazy && !values_[v].after.interval.empty());
+    if (!alone) apply(values_[v], k);
+    const InteractionValue& value = values_[v];
+    urgent = urgent || (value.raw.urgency != Urgency::Lazy && !value.after.interval.empty());
   }
   cache_.set_urgent(k, urgent);
   // A stale connector's binders are all stale already (ConnectorCache::begin).
   if (!cache_.stale(k)) cache_.priorities_changed(k);
-  count_connector_items(k);
 }
 
 }  // namespace smcbip::engines

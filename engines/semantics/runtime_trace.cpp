@@ -1,0 +1,98 @@
+// What a trace shows of a run: the ports of an interaction with their data, values as the
+// model writes them, and the constraints a date misses.
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engines/semantics/detail/runtime_shared.h"
+#include "engines/semantics/runtime.h"
+
+namespace smcbip::engines {
+
+using bipc::ir::AtomType;
+using bipc::ir::kNone;
+using detail::wait;
+
+std::string Runtime::format_ports(const InteractionValue& value) const {
+  const bipc::ir::ConnectorInstance& connector = system_.connectors[value.connector];
+  std::string text;
+  for (const PortValue& pv : value.choice) {
+    if (!text.empty()) text += ' ';
+    text += connector.bound_names[pv.param] + "(";
+    const bipc::ir::PortType* port_type = nullptr;
+    std::vector<Val> values;
+    if (pv.from_atom) {
+      const AtomType& type = system_.atom_types[system_.atoms[pv.atom].type];
+      const bipc::ir::Port& port = type.ports[pv.port];
+      port_type = &system_.port_types[port.type];
+      for (Index slot : port.data) values.push_back(state_.data[layout_.atom_data[pv.atom] + slot]);
+    } else {
+      const InteractionValue& sub = values_[pv.sub];
+      const auto& type = system_.connector_types[system_.connectors[sub.connector].type];
+      if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
+      for (Index slot : type.export_data) values.push_back(sub.data[slot]);
+    }
+    if (port_type) {
+      for (std::size_t p = 0; p < port_type->params.size() && p < values.size(); ++p) {
+        text += port_type->params[p].first + "=" +
+                format_value(values[p], port_type->params[p].second.kind) + ";";
+      }
+    }
+    text += ")";
+  }
+  return text;
+}
+
+std::string Runtime::format_value(Val v, bipc::ir::ValueKind kind) const {
+  switch (kind) {
+    case bipc::ir::ValueKind::Bool:
+      return v.b ? "true" : "false";
+    case bipc::ir::ValueKind::Float: {
+      std::ostringstream s;
+      s << v.f;
+      return s.str();
+    }
+    case bipc::ir::ValueKind::String:
+      return strings_.text(v.s);
+    default:
+      return std::to_string(v.i);
+  }
+}
+
+std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
+  std::vector<std::string> lines;
+  auto late = [&](const Constraint& c) { return !wait(c, state_.now).contains(t); };
+  auto constraint_text = [](const Constraint& c) {
+    return format_interval(c.interval) + " " + urgency_name(c.urgency);
+  };
+  for (Index k : layout_.listed_connectors) {
+    for (Index v : connector_values_[k]) {
+      const InteractionValue& value = values_[v];
+      if (value.after.interval.empty() || !late(value.raw)) continue;
+      lines.push_back(layout_.connector_names[k] + ": " + format_ports(value) + " " +
+                      constraint_text(value.raw));
+    }
+  }
+  for (const auto& [atom, port] : layout_.internal_ports) {
+    if (state_.resume_pending[atom]) continue;
+    const auto& v = port_values_[port_offset_[atom] + port];
+    if (!v || !late(v->constraint)) continue;
+    const AtomType& type = system_.atom_types[system_.atoms[atom].type];
+    lines.push_back(layout_.atom_names[atom] + "." + type.ports[port].name + " " +
+                    constraint_text(v->constraint));
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (!state_.resume_pending[a] && !atom_invariant_[a].contains(t)) {
+      lines.push_back(layout_.atom_names[a] + " invariant " + format_interval(atom_invariant_[a]));
+    }
+  }
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    if (state_.resume_pending[a] && !state_.resume_interval[a].contains(t)) {
+      lines.push_back(layout_.atom_names[a] + " resume " +
+                      format_interval(state_.resume_interval[a]));
+    }
+  }
+  return lines;
+}
+
+}  // namespace smcbip::engines

@@ -1,0 +1,88 @@
+// The data a running system is made of: its state, the interaction values and items of a state,
+// the errors of a run, and the options that choose how the semantics is computed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bipc/ir/ir.h"
+#include "engines/interpreter/code_eval.h"
+#include "engines/model.h"
+#include "engines/semantics/layout.h"
+
+namespace smcbip::engines {
+
+/// The complete state of a run (copyable: the explorer keeps states).
+struct RunState {
+  TimeValue now = 0;
+  std::vector<Val> data;
+  std::vector<std::uint8_t> marking;
+  std::vector<ClockState> clocks;
+  std::vector<std::uint8_t> resume_pending;  // per atom
+  std::vector<Interval> resume_interval;     // per atom, absolute
+};
+
+/// One value a connector port parameter may take: an atom port's offer or one enabled
+/// interaction of a sub-connector (with that connector's data after its `up`).
+struct PortValue {
+  bool from_atom = true;
+  Index atom = 0, port = 0;     // atom offers
+  Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values_
+  Constraint constraint;
+  Index param = 0;  // the connector's port parameter this value is offered to
+};
+
+/// An enabled interaction value of a connector.
+struct InteractionValue {
+  Index connector = 0;
+  /// Index into Layout::defined[connector]; kLargest for the largest enabled interaction of a
+  /// maximal_only connector.
+  std::uint32_t defined = 0;
+  static constexpr std::uint32_t kLargest = 0xffffffffu;
+  int code = -1;                  // index into ConnectorType::interactions (guard, up, down), or -1
+  PortSet ports = 0;              // empty on connectors wider than a PortSet
+  std::vector<PortValue> choice;  // one per port parameter taking part, in declaration order
+  Constraint raw;                 // intersection of the chosen port values' constraints
+  Constraint after;               // after maximal progress and priorities
+  std::vector<Val> data;          // connector data after `up`
+};
+
+/// An item the engine may execute at a state: an interaction, an internal port, an extern port.
+struct Item {
+  enum class Kind : std::uint8_t { Interaction, Internal, External } kind = Kind::Interaction;
+  Index value = 0;           // Interaction: index into values()
+  Index atom = 0, port = 0;  // Internal / External
+  Constraint constraint;     // cut to the admissible waiting interval from now
+  Constraint offered;        // before that cut: unchanged while the item's atoms do not move
+};
+
+/// How the semantics is computed: the schedulers share it and differ only here.
+struct RuntimeOptions {
+  bool maximal_progress = true;
+  /// Optimised scheduler: keep each connector's interactions between steps and recompute only
+  /// those of connectors whose atoms (or sub-connectors) an execution touched.
+  bool incremental = false;
+  /// Multithread scheduler: the atoms of one interaction execute on this many threads.
+  unsigned threads = 1;
+  /// Multithread scheduler: the least estimated work of an interaction's atoms, in
+  /// instructions, for which they fire in parallel (0: always; tests use it).
+  std::size_t parallel_min_work = 1000;
+};
+
+/// A run-time error of the model, with the reference engine's code and message, and where in
+/// the model's source it arose (`file:line:column`, empty when unknown).
+struct ModelError {
+  int code = 0;
+  std::string message;
+  std::string where;
+};
+
+/// A state the engines cannot compute (thrown inside compute_items, reported as an input error).
+struct UnsupportedRun {
+  std::string message;
+};
+
+}  // namespace smcbip::engines
