@@ -5,7 +5,7 @@
 // with error 6 when it arrives (the reference engine's checkExternals).
 #include <algorithm>
 
-#include "engines/engines.h"
+#include "engines/api/simulate.h"
 #include "engines/semantics/runtime.h"
 
 namespace smcbip::engines {

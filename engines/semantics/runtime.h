@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/index_set.h"
