@@ -5,8 +5,10 @@
 include(CMakePackageConfigHelpers)
 
 # Makes the static library NAME, built from the stage folder of the same name, part of the
-# package as smcbip::NAME, with that folder's headers as include/NAME/... .
+# package as smcbip::NAME, with that folder's headers as include/NAME/... : all of them, or
+# with HEADERS <file or folder>... only those (a stage whose other headers are its inside).
 function(smcbip_installed_library name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "HEADERS")
   # Position-independent, so that a model's plugin (a shared module) can link it in. Without
   # semantic interposition: nothing interposes a static library's functions, and PIC code that
   # allows it may not inline them (the engines ran a quarter slower on families/work_10.bip).
@@ -15,8 +17,20 @@ function(smcbip_installed_library name)
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   install(TARGETS ${name} EXPORT smcbipTargets)
-  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${name}
-          FILES_MATCHING PATTERN "*.h" PATTERN tools EXCLUDE)
+  if(NOT arg_HEADERS)
+    install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${name}
+            FILES_MATCHING PATTERN "*.h" PATTERN tools EXCLUDE)
+    return()
+  endif()
+  foreach(entry IN LISTS arg_HEADERS)
+    if(IS_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/${entry})
+      install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/${entry}
+              DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${name} FILES_MATCHING PATTERN "*.h")
+    else()
+      install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/${entry}
+              DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${name})
+    endif()
+  endforeach()
 endfunction()
 
 set(SMCBIP_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/smcbip)

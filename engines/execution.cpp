@@ -1,6 +1,6 @@
 // A run driven by its host: the scheduler's decisions carried out one step at a time, a decision
 // due after the host's date kept for later, host writes and host-fed extern ports.
-#include "engines/execution.h"
+#include "engines/api/execution.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,5 +1,5 @@
 // The registry of extern functions and extern-port classes, and the C builtins models use.
-#include "engines/externs.h"
+#include "engines/api/externs.h"
 
 #include <chrono>
 #include <cstdio>

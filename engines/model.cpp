@@ -1,10 +1,13 @@
-// The interpreted model.
-#include "engines/model.h"
+// The model interface's own code, the interpreted model and the compiled one.
+#include "engines/api/model.h"
 
+#include <memory>
 #include <string>
 
+#include "engines/api/compiled_model.h"
 #include "engines/interpreter/clock_bounds.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/plugin_steps.h"
 
 namespace smcbip::engines {
 
@@ -27,6 +30,19 @@ bipc::ir::Index ModelCode::atom_internal(bipc::ir::Index type, const std::uint8_
 
 bool ModelCode::atom_fire(bipc::ir::Index type, bipc::ir::Index, std::uint8_t*, const Frame&) {
   not_compiled(type);
+}
+
+std::unique_ptr<CompiledSteps> ModelCode::make_steps(const bipc::ir::System& system,
+                                                     const Layout& layout) {
+  const CompiledAtoms atoms = compiled_atoms();
+  if (atoms.types.empty()) return nullptr;
+  return make_plugin_steps(*this, atoms, system, layout);
+}
+
+std::unique_ptr<ModelCode> make_interpreted_code(const bipc::ir::System& system,
+                                                 const BoundFunctions& functions, CallContext& call,
+                                                 const GuardBounds* guard_bounds) {
+  return std::make_unique<CodeEvaluator>(system, functions, call, guard_bounds);
 }
 
 InterpretedModel::InterpretedModel(const bipc::ir::System& system)

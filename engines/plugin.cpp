@@ -1,5 +1,5 @@
 // Loading generated plugins with dlopen.
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 
 #include <dlfcn.h>
 

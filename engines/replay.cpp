@@ -1,5 +1,5 @@
 // Reading a JSON-lines trace, and following it step by step.
-#include "engines/replay.h"
+#include "engines/api/replay.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "engines/run_observer.h"
+#include "engines/api/run_observer.h"
 
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/layout.h"

@@ -1,12 +1,13 @@
 // Simulation runs: the scheduling loop over the shared semantics, in simulated or real time,
 // with the reference engine's random choice or the stochastic race of planned dates.
+#include "engines/api/simulate.h"
+
 #include <chrono>
 #include <iostream>
 #include <thread>
 
 #include "engines/detail/replay_follower.h"
 #include "engines/detail/scheduler.h"
-#include "engines/engines.h"
 #include "engines/explore.h"
 #include "engines/interactive.h"
 #include "engines/trace/jsonl_trace.h"

@@ -1,5 +1,5 @@
 // Model time: formatting and interval arithmetic.
-#include "engines/time_value.h"
+#include "engines/api/time_value.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // Interned strings of run-time values.
-#include "engines/value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
 

@@ -78,10 +78,11 @@ std::string step_function_attributes(const ir::AtomType& type) {
 
 void offers_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
   out << step_function_attributes(type) << "ir::Index offers_" << type_index
-      << "([[maybe_unused]] Context& c, [[maybe_unused]] const std::uint8_t* m,\n"
+      << "(void* context, [[maybe_unused]] const std::uint8_t* m,\n"
       << "    [[maybe_unused]] const se::Frame& f, [[maybe_unused]] "
          "std::optional<se::AtomPortValue>* "
-         "v) {\n";
+         "v) {\n"
+      << "  [[maybe_unused]] Context& c = *static_cast<Context*>(context);\n";
   if (ir::is_state_machine(type)) {
     // Only the transitions from the one marked place (the last one if none is).
     out << "  std::size_t marked = 0;\n"
@@ -110,8 +111,9 @@ void offers_function(std::ostream& out, const ir::AtomType& type, ir::Index type
 
 void internal_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
   out << step_function_attributes(type) << "ir::Index internal_" << type_index
-      << "([[maybe_unused]] Context& c, [[maybe_unused]] const std::uint8_t* m,\n"
+      << "(void* context, [[maybe_unused]] const std::uint8_t* m,\n"
       << "    [[maybe_unused]] const se::Frame& f) {\n"
+      << "  [[maybe_unused]] Context& c = *static_cast<Context*>(context);\n"
       << "  ir::Index enabled = ir::kNone;\n";
   for (ir::Index t = 0; t < type.transitions.size(); ++t) {
     const ir::Transition& tr = type.transitions[t];
@@ -127,8 +129,9 @@ void internal_function(std::ostream& out, const ir::AtomType& type, ir::Index ty
 
 void fire_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
   out << step_function_attributes(type) << "bool fire_" << type_index
-      << "([[maybe_unused]] Context& c, ir::Index t, [[maybe_unused]] std::uint8_t* m,\n"
+      << "(void* context, ir::Index t, [[maybe_unused]] std::uint8_t* m,\n"
       << "    [[maybe_unused]] const se::Frame& f) {\n"
+      << "  [[maybe_unused]] Context& c = *static_cast<Context*>(context);\n"
       << "  switch (t) {\n";
   for (ir::Index t = 0; t < type.transitions.size(); ++t) {
     const ir::Transition& tr = type.transitions[t];
@@ -157,9 +160,11 @@ AtomStepFunctions atom_step_functions(const ir::System& system) {
     internal_function(out, type, k);
     fire_function(out, type, k);
     const std::string label = "      case " + std::to_string(k) + ": return ";
-    functions.offers_cases += label + "offers_" + std::to_string(k) + "(c_, m, f, v);\n";
-    functions.internal_cases += label + "internal_" + std::to_string(k) + "(c_, m, f);\n";
-    functions.fire_cases += label + "fire_" + std::to_string(k) + "(c_, t, m, f);\n";
+    const std::string n = std::to_string(k);
+    functions.offers_cases += label + "offers_" + n + "(&c_, m, f, v);\n";
+    functions.internal_cases += label + "internal_" + n + "(&c_, m, f);\n";
+    functions.fire_cases += label + "fire_" + n + "(&c_, t, m, f);\n";
+    functions.table_entries += "    {offers_" + n + ", internal_" + n + ", fire_" + n + "},\n";
   }
   functions.definitions = out.str();
   return functions;

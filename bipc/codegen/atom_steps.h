@@ -8,12 +8,15 @@
 
 namespace smcbip::bipc::codegen {
 
-/// The functions of every atom type, and the switch cases (on the atom type) that call them.
-/// The text uses what code_function's does, the code functions `code_<id>` of every Code, and
-/// a context member `timed` (the evaluator of guards over clocks).
+/// The functions of every atom type (taking the generated Context as `void* context`), the
+/// switch cases (on the atom type) that call them with the code's context `c_`, and the entries
+/// of the engines::CompiledAtomSteps table, one per type in order. The text uses what
+/// code_function's does, the code functions `code_<id>` of every Code, and a context member
+/// `timed` (the evaluator of guards over clocks).
 struct AtomStepFunctions {
   std::string definitions;
   std::string offers_cases, internal_cases, fire_cases;
+  std::string table_entries;
 };
 
 AtomStepFunctions atom_step_functions(const ir::System& system);

@@ -18,7 +18,7 @@ struct UntranslatableCode {
 /// `const smcbip::engines::Frame& f` and a context `c` with members `system`, `functions` and
 /// `call` (the model's System, its BoundFunctions and the run's CallContext). With `returns_value`
 /// it returns the value the code leaves on top of its stack (`true` when none), otherwise
-/// nothing. Each instruction's semantics is a call of engines/interpreter/code_ops.h with
+/// nothing. Each instruction's semantics is a call of engines/api/code_ops.h with
 /// constant arguments. The text uses the aliases `se` (smcbip::engines), `ops`
 /// (smcbip::engines::code_ops) and `ir` (smcbip::bipc::ir), and the context type `Context`.
 std::string code_function(const ir::System& system, const ir::Code& code, const std::string& name,

@@ -50,8 +50,8 @@ std::string model_header(const std::string& hash, const ProjectOptions& options)
   out << kBanner << "// The model " << comment_text(options.root) << " of "
       << comment_text(options.model_file) << ", compiled.\n"
       << "#pragma once\n\n#include <iostream>\n#include <string_view>\n\n"
-      << "#include \"bipc/ir/ir.h\"\n#include \"engines/execution.h\"\n"
-      << "#include \"engines/externs.h\"\n#include \"engines/model.h\"\n\n"
+      << "#include \"bipc/ir/ir.h\"\n#include \"engines/api/execution.h\"\n"
+      << "#include \"engines/api/externs.h\"\n#include \"engines/api/model.h\"\n\n"
       << open << "\n"
       << "/// The identity of the checked model: SHA-256 of its normalised IR and the contents of\n"
       << "/// its extern sources (bipc/ir/model_hash.h), as `bipc hash` prints it.\n"
@@ -82,7 +82,7 @@ std::string model_header(const std::string& hash, const ProjectOptions& options)
          "registered\n"
       << "/// class serves, observe fired interactions (set_observer or the outcomes). Steps do "
          "not\n"
-      << "/// allocate once the first ones have sized the buffers (engines/execution.h).\n"
+      << "/// allocate once the first ones have sized the buffers (engines/api/execution.h).\n"
       << "class Component : public smcbip::engines::Execution {\n public:\n"
       << "  explicit Component(const smcbip::engines::SimulateOptions& options = "
          "component_options(),\n"
@@ -209,7 +209,7 @@ std::string plugin_source(const ProjectOptions& options) {
   const std::string& ns = options.code.name_space;
   std::ostringstream out;
   out << kBanner << "// The entry point smcbip finds when it loads this model (--compiled).\n"
-      << "#include \"engines/plugin.h\"\n#include \"model.h\"\n\n"
+      << "#include \"engines/api/plugin.h\"\n#include \"model.h\"\n\n"
       << "extern \"C\" __attribute__((visibility(\"default\"))) const "
          "smcbip::engines::PluginEntry*\n"
       << "smcbip_model_plugin() {\n"
@@ -225,7 +225,7 @@ std::string main_source(const ProjectOptions& options) {
   const std::string& ns = options.code.name_space;
   std::ostringstream out;
   out << kBanner << "// Runs the model as `smcbip simulate` does, with the same options.\n"
-      << "#include \"engines/options.h\"\n#include \"model.h\"\n\n"
+      << "#include \"engines/api/options.h\"\n#include \"model.h\"\n\n"
       << "int main(int argc, char** argv) {\n"
       << "  return smcbip::engines::simulate_main(argc, argv, " << ns << "::model(), " << ns
       << "::externs(),\n"

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "engines/api/replay.h"
 #include "engines/detail/scheduler.h"
-#include "engines/replay.h"
 
 namespace smcbip::engines::detail {
 

@@ -15,7 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "engines/engines.h"
+#include "engines/api/simulate.h"
+#include "engines/semantics/compiled_steps.h"
 #include "engines/semantics/item_race.h"
 #include "engines/semantics/runtime.h"
 #include "engines/semantics/shared_window.h"

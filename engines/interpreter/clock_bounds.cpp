@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engines/interpreter/code_eval.h"
 #include "engines/interpreter/detail/time_sets.h"
 
 namespace smcbip::engines {

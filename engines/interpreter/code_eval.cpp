@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "engines/api/code_ops.h"
 #include "engines/interpreter/clock_bounds.h"
-#include "engines/interpreter/code_ops.h"
 #include "engines/interpreter/detail/time_sets.h"
 
 namespace smcbip::engines {

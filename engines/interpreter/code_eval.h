@@ -8,52 +8,13 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
-#include "engines/model.h"
-#include "engines/time_value.h"
-#include "engines/value.h"
+#include "engines/api/compiled_model.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
+#include "engines/api/time_value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
-
-/// A clock of a running atom: its value `value_at` (in its unit) at date `since`, growing at
-/// `rate` units per unit of time.
-struct ClockState {
-  double value_at = 0.0;
-  TimeValue since = 0;
-  double rate = 1.0;
-};
-
-/// Where code finds the slots of its context. Port parameters go through `port_slot` because a
-/// connector's port may stand for an atom's data or a sub-connector's exported data.
-struct Frame {
-  Val* atom_data = nullptr;
-  const Val* atom_params = nullptr;
-  ClockState* clocks = nullptr;            // null when the atom has no clocks
-  const TimeValue* clock_units = nullptr;  // nanoseconds per unit of each clock
-  Val* connector_data = nullptr;
-  Val* (*port_slot)(const void* context, bipc::ir::Index port, std::uint16_t arg) = nullptr;
-  const void* port_context = nullptr;
-  Val* (*instance_slot)(const void* context, bipc::ir::Index atom, std::uint16_t slot) = nullptr;
-  const void* instance_context = nullptr;
-  TimeValue now = 0;
-};
-
-/// A run-time fault of model code (division by zero, unknown extern), reported as an error of
-/// the run at the instruction's source location, with kInputError: the model's fault, not the
-/// tool's.
-struct CodeFault {
-  std::string message;
-  bipc::ir::Index site = bipc::ir::kNone;  // System::sites, where the faulting code was written
-};
-
-/// The extern functions a system's calls resolve to, looked up once per model.
-struct BoundFunctions {
-  std::vector<const Externs::Function*> functions;  // per System::functions entry
-  std::vector<std::vector<ValueKind>> arg_kinds;
-  std::vector<std::uint64_t> string_ids;  // per System::strings entry, interned
-  /// Extern-port classes by backend name (`as "<class>"`); null when none is registered.
-  std::map<std::string, const ExternPortFactory*> port_classes;
-};
 
 /// Resolves the system's extern functions against a registry and interns its string literals;
 /// an error message names the first function without an implementation.
@@ -98,8 +59,7 @@ class CodeEvaluator final : public ModelCode {
 
   /// The value of a clock at a date, in the clock's unit.
   static double clock_value(const ClockState& clock, TimeValue unit, TimeValue at) {
-    return clock.value_at +
-           clock.rate * static_cast<double>(at - clock.since) / static_cast<double>(unit);
+    return engines::clock_value(clock, unit, at);
   }
 
  private:

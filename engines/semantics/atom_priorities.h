@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 
 namespace smcbip::engines {
 

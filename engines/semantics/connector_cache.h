@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/time_value.h"
 #include "engines/semantics/index_set.h"
 #include "engines/semantics/layout.h"
-#include "engines/time_value.h"
 
 namespace smcbip::engines {
 

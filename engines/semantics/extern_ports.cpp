@@ -8,7 +8,8 @@
 #include <algorithm>
 #include <string>
 
-#include "engines/engines.h"
+#include "engines/api/simulate.h"
+#include "engines/semantics/runtime.h"
 
 namespace smcbip::engines {
 

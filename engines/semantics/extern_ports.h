@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime_types.h"
 

@@ -24,9 +24,10 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/model.h"
+#include "engines/api/run_observer.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
-#include "engines/run_observer.h"
+#include "engines/semantics/compiled_steps.h"
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/enabled_positions.h"
 #include "engines/semantics/flat_tables.h"

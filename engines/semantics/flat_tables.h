@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/model.h"
+#include "engines/api/model.h"
 #include "engines/semantics/layout.h"
 
 namespace smcbip::engines {

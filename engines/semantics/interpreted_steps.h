@@ -6,7 +6,8 @@
 #include <memory>
 
 #include "bipc/ir/ir.h"
-#include "engines/model.h"
+#include "engines/api/model.h"
+#include "engines/semantics/compiled_steps.h"
 #include "engines/semantics/layout.h"
 
 namespace smcbip::engines {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/model.h"
+#include "engines/api/model.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/extern_ports.h"
 #include "engines/semantics/index_list.h"

@@ -10,9 +10,9 @@
 #include <optional>
 #include <utility>
 
+#include "engines/api/time_value.h"
 #include "engines/stochastic/date_planner.h"
 #include "engines/stochastic/random_stream.h"
-#include "engines/time_value.h"
 
 namespace smcbip::engines {
 

@@ -11,8 +11,8 @@
 
 #include "bipc/ir/data_guard.h"
 #include "bipc/ir/ir.h"
-#include "engines/time_value.h"
-#include "engines/value.h"
+#include "engines/api/time_value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 #include "engines/parallel/fork_join_pool.h"
 #include "engines/semantics/runtime.h"
 

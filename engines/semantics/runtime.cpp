@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "bipc/ir/clock_guard.h"
-#include "engines/engines.h"
+#include "engines/api/simulate.h"
 #include "engines/semantics/atom_steps.h"
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/parallel_firing.h"

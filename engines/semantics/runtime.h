@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 #include "engines/semantics/atom_priorities.h"
 #include "engines/semantics/compound_priorities.h"
 #include "engines/semantics/connector_cache.h"

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engines/engines.h"
+#include "engines/api/simulate.h"
 #include "engines/semantics/parallel_firing.h"
 #include "engines/semantics/runtime.h"
 

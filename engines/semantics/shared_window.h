@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "engines/api/time_value.h"
 #include "engines/stochastic/random_stream.h"
-#include "engines/time_value.h"
 
 namespace smcbip::engines {
 

@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include "engines/run_observer.h"
+#include "engines/api/run_observer.h"
 
 namespace smcbip::engines {
 

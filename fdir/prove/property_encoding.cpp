@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "engines/run_observer.h"
+#include "engines/api/run_observer.h"
 #include "fdir/errors.h"
 #include "monitors/run/run_monitor.h"
 

@@ -9,8 +9,8 @@
 #include <tuple>
 #include <unordered_set>
 
+#include "engines/api/model.h"
 #include "engines/explore.h"
-#include "engines/model.h"
 #include "engines/trace/text_trace.h"
 #include "fdir/errors.h"
 

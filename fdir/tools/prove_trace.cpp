@@ -8,8 +8,8 @@
 #include "bipc/exit_codes.h"
 #include "bipc/json_dump.h"
 #include "bipc/output_file.h"
+#include "engines/api/replay.h"
 #include "engines/engines.h"
-#include "engines/replay.h"
 
 namespace smcbip::tools {
 

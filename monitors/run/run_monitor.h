@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engines/run_observer.h"
+#include "engines/api/run_observer.h"
 #include "monitors/online/critical_bound.h"
 #include "monitors/online/extremum.h"
 #include "monitors/online/online_monitor.h"

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/plugin.h"
 #include "engines/engines.h"
-#include "engines/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/stats/interval_estimation.h"
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "engines/api/plugin.h"
 #include "engines/engines.h"
-#include "engines/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/check/answer.h"
 

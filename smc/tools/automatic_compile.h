@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/check/check.h"
 #include "smc/tools/plugin_cache.h"

@@ -11,7 +11,7 @@
 #include "bipc/ir/model_hash.h"
 #include "bipc/options.h"
 #include "bipc/output_file.h"
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 #include "monitors/monitors.h"
 #include "smc/tools/automatic_compile.h"
 #include "smc/tools/first_hit_plot.h"

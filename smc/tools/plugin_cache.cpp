@@ -20,7 +20,7 @@
 #include "bipc/codegen/code_cpp.h"
 #include "bipc/codegen/generate_project.h"
 #include "bipc/output_file.h"
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 
 extern char** environ;
 

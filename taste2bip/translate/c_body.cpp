@@ -213,7 +213,7 @@ BodyFiles c_body_files(
            kBanner + "#include \"" + shim_name +
            ".h\"\n\n#include <ucontext.h>\n\n#include <atomic>\n#include <cstdio>\n"
            "#include <cstring>\n#include <memory>\n#include <string>\n#include <thread>\n"
-           "#include <type_traits>\n\n#include \"engines/externs.h\"\n#include "
+           "#include <type_traits>\n\n#include \"engines/api/externs.h\"\n#include "
            "\"dataview-uniq.h\"\n" +
            shim.includes + "\nnamespace {\n\n" + kActivation + shim.state + "}  // namespace\n\n" +
            shim.definitions});

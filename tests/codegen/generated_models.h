@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "engines/model.h"
+#include "engines/api/model.h"
 
 namespace smcbip::tests {
 

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <vector>
 
-#include "engines/model.h"
+#include "engines/api/model.h"
 
 namespace smcbip::tests {
 

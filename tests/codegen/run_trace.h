@@ -8,6 +8,7 @@
 
 #include "engines/engines.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/compiled_steps.h"
 #include "engines/semantics/layout.h"
 
 namespace smcbip::tests {

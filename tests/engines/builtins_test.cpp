@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engines/api/externs.h"
 #include "engines/engines.h"
-#include "engines/externs.h"
 #include "tests/engines/temp_model.h"
 
 namespace smcbip::engines {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "engines/interpreter/code_eval.h"
 #include "tests/engines/code_builders.h"
 
 namespace smcbip::engines {

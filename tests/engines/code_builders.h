@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "bipc/ir/ir.h"
-#include "engines/value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines::code_builders {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "engines/externs.h"
+#include "engines/api/externs.h"
 
 namespace smcbip::tests {
 

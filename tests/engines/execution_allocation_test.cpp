@@ -1,4 +1,4 @@
-// No allocation in the steps of a started Execution (engines/execution.h): this executable
+// No allocation in the steps of a started Execution (engines/api/execution.h): this executable
 // replaces the global operator new and delete with counting ones, and counts only inside the
 // calls under test (step, run_until, read, write, feed), once a warm-up let the buffers grow.
 #include <gtest/gtest.h>
@@ -12,8 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include "engines/api/execution.h"
 #include "engines/engines.h"
-#include "engines/execution.h"
 #include "tests/engines/generated_conformance.h"
 #include "tests/engines/temp_model.h"
 #include "tests/engines/trace_oracles.h"

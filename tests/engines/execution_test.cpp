@@ -2,7 +2,7 @@
 // (models of models/, and conformance models interpreted and generated; reference and optimised
 // engines); run_until slices make the same steps; a started-over run is a fresh one; host
 // writes, fed extern ports and errors.
-#include "engines/execution.h"
+#include "engines/api/execution.h"
 
 #include <gtest/gtest.h>
 

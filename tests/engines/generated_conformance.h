@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "engines/model.h"
+#include "engines/api/model.h"
 
 namespace smcbip::tests {
 

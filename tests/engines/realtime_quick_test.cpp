@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "bipc/bipc.h"
+#include "engines/api/externs.h"
+#include "engines/api/time_value.h"
 #include "engines/engines.h"
-#include "engines/externs.h"
-#include "engines/time_value.h"
 #include "tests/engines/trace_oracles.h"
 
 namespace smcbip::tests {

@@ -1,7 +1,7 @@
 // `--replay`: a recorded run replays to the same states on every engine, a connector named
 // without its interaction is followed only as far as the recorded states agree, and bad lines
 // are refused at their place.
-#include "engines/replay.h"
+#include "engines/api/replay.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <sstream>
 
-#include "engines/model.h"
+#include "engines/api/model.h"
 #include "engines/semantics/runtime.h"
 
 namespace smcbip::tests {

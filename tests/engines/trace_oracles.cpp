@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "bipc/bipc.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
 #include "tests/bipc/shared_data.h"
 #include "tests/engines/conformance_externs.h"
 

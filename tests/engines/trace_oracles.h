@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/model.h"
 #include "engines/engines.h"
-#include "engines/model.h"
 #include "tests/engines/generated_conformance.h"
 
 namespace smcbip::tests {

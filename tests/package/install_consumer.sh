@@ -41,9 +41,15 @@ logged "$scratch/install.log" "$cmake" --install "$build_dir" --config "$config"
 for installed in bin/bipc bin/smcbip lib/cmake/smcbip/smcbipConfig.cmake \
                  lib/cmake/smcbip/smcbipConfigVersion.cmake include/bipc/bipc.h \
                  include/bipc/ir/ir.h include/engines/engines.h \
-                 include/engines/interpreter/code_ops.h; do
+                 include/engines/api/code_ops.h include/engines/api/compiled_model.h \
+                 include/engines/api/plugin_abi.h; do
   [[ -e $prefix/$installed ]] || fail "cmake --install did not install $installed"
 done
+# The engines install their public API alone: engines.h and api/ (generated code and host
+# programs compile against nothing else of them).
+internal=$(find "$prefix/include/engines" -name '*.h' ! -path "$prefix/include/engines/api/*" \
+           ! -path "$prefix/include/engines/engines.h")
+[[ -z $internal ]] || fail "cmake --install installed headers of the engines' inside: $internal"
 if grep -rqF "$source_dir" "$prefix/lib/cmake/smcbip"; then
   fail "the installed package names the source tree:" \
        "$(grep -rlF "$source_dir" "$prefix/lib/cmake/smcbip")"

@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 #include "tests/taste2bip/watchdog_model.h"
 
 namespace smcbip::taste2bip::test {

@@ -37,7 +37,7 @@
 #include <string>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
 #include "tests/taste2bip/watchdog_traces.h"
 
 /// Skips the calling test (one-line reason) when the shared data is absent (a user's clone).

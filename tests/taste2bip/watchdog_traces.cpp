@@ -8,8 +8,8 @@
 #include <unordered_set>
 #include <utility>
 
+#include "engines/api/model.h"
 #include "engines/explore.h"
-#include "engines/model.h"
 #include "engines/semantics/runtime.h"
 
 namespace smcbip::taste2bip::test {

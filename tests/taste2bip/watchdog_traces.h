@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
+#include "engines/api/externs.h"
 
 namespace smcbip::taste2bip::test {
 

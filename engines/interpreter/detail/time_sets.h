@@ -7,7 +7,7 @@
 
 #include "bipc/ir/clock_guard.h"
 #include "bipc/ir/ir.h"
-#include "engines/time_value.h"
+#include "engines/api/time_value.h"
 
 namespace smcbip::engines::detail {
 

@@ -1,7 +1,7 @@
 // The entry point smcbip finds when it loads pus_onboard's plugin (--compiled), as bipc gen
 // writes it for its own projects (the generated plugin.cpp is not among smcbip_add_model's
 // outputs, so the build names its own).
-#include "engines/plugin.h"
+#include "engines/api/plugin.h"
 #include "model.h"
 
 extern "C" __attribute__((visibility("default"))) const smcbip::engines::PluginEntry*

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "console/link.h"
-#include "engines/execution.h"
+#include "engines/api/execution.h"
 
 namespace smcbip::pus::onboard {
 

@@ -7,8 +7,8 @@
 
 #include "bipc/bipc.h"
 #include "bipc/options.h"
+#include "engines/api/options.h"
 #include "engines/engines.h"
-#include "engines/options.h"
 
 int simulate_model(int argc, const char* const* argv) {
   using namespace smcbip;

@@ -13,8 +13,8 @@
 #include "bipc/exit_codes.h"
 #include "bipc/options.h"
 #include "bipc/tool_main.h"
-#include "engines/engines.h"
-#include "engines/replay.h"
+#include "engines/api/replay.h"
+#include "engines/api/simulate.h"
 
 namespace smcbip::engines {
 

@@ -14,10 +14,10 @@
 #include <string_view>
 
 #include "bipc/ir/ir.h"
-#include "engines/engines.h"
-#include "engines/externs.h"
-#include "engines/model.h"
-#include "engines/run_observer.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
+#include "engines/api/run_observer.h"
+#include "engines/api/simulate.h"
 
 namespace smcbip::engines {
 

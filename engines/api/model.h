@@ -7,46 +7,20 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "bipc/ir/ir.h"
-#include "engines/externs.h"
-#include "engines/time_value.h"
-#include "engines/value.h"
+#include "engines/api/externs.h"
+#include "engines/api/time_value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
 
-struct Frame;
+struct Frame;  // compiled_model.h
 struct BoundFunctions;
 class GuardBounds;
 struct Layout;
-struct RunState;
-struct StepInfo;
-class RandomStream;
-class Runtime;
-class DatePlanner;
-
-/// A step path compiled together with a model's code (engines/semantics/flat_steps.h): it takes
-/// over a run the engines started and makes the steps the optimised engine would make, with the
-/// same random draws, for the models it covers. It reports nothing but its steps: any state it
-/// does not cover (an error of the model among them) ends its part of the run as Beyond, and the
-/// engines replay the run from its start to find out what happens there.
-class CompiledSteps {
- public:
-  enum class Outcome : std::uint8_t { Fired, Deadlock, Timelock, Limit, Beyond };
-  /// What a run on the compiled path draws from and how it chooses.
-  struct Run {
-    Runtime& runtime;      // its state: initialised, nothing fired yet
-    RandomStream& random;  // the run's stream
-    DatePlanner* planner;  // stochastic mode: draws the dates of the race; else nullptr
-    bool asap = false, first_enabled = false;
-  };
-  virtual ~CompiledSteps() = default;
-  /// Takes over the run. False when its state is not covered.
-  virtual bool begin(const Run& run) = 0;
-  /// Decides and fires the next step (`info` tells which); Deadlock or Timelock when nothing
-  /// is enabled (as the engines tell them apart), else Limit when `at_limit`.
-  virtual Outcome step(bool at_limit, StepInfo& info) = 0;
-};
+class CompiledSteps;
 
 /// A timing constraint: when an item may execute, and how urgent it is.
 struct Constraint {
@@ -58,6 +32,24 @@ struct Constraint {
 struct AtomPortValue {
   bipc::ir::Index transition = bipc::ir::kNone;
   Constraint constraint;
+};
+
+/// One atom type's steps as generated code exports them (ModelCode::atom_offers, atom_internal
+/// and atom_fire for that type): plain functions over the code's own context, which the
+/// engines' compiled step path calls through these pointers.
+struct CompiledAtomSteps {
+  bipc::ir::Index (*offers)(void* context, const std::uint8_t* marking, const Frame& frame,
+                            std::optional<AtomPortValue>* offers) = nullptr;
+  bipc::ir::Index (*internal)(void* context, const std::uint8_t* marking,
+                              const Frame& frame) = nullptr;
+  bool (*fire)(void* context, bipc::ir::Index transition, std::uint8_t* marking,
+               const Frame& frame) = nullptr;
+};
+
+/// Every atom type's steps (indexed by the IR's atom type), and the context they take.
+struct CompiledAtoms {
+  std::span<const CompiledAtomSteps> types;
+  void* context = nullptr;
 };
 
 /// Runs a model's code over one frame (an atom's or a connector's slots, and the date). One per
@@ -100,12 +92,14 @@ class ModelCode {
                          const Frame& frame);
   static constexpr bipc::ir::Index kSeveralTransitions = bipc::ir::kNone - 1;
 
-  /// The compiled step path over this code for `system` laid out as `layout`, if the model
-  /// has one and it covers the system (nullptr otherwise). The code must outlive it.
-  virtual std::unique_ptr<CompiledSteps> make_steps(const bipc::ir::System& /*system*/,
-                                                    const Layout& /*layout*/) {
-    return nullptr;
-  }
+  /// Generated code's atom steps, for the engines' compiled step path (empty when the code
+  /// has none: the interpreter's path then runs).
+  virtual CompiledAtoms compiled_atoms() { return {}; }
+
+  /// The compiled step path over this code's compiled_atoms() for `system` laid out as
+  /// `layout`, if it has them and the path covers the system (nullptr otherwise). The code must
+  /// outlive it. Not virtual: the path is the engines' own, whichever code it calls.
+  std::unique_ptr<CompiledSteps> make_steps(const bipc::ir::System& system, const Layout& layout);
 };
 
 /// A runnable model: its structure, and code runners for it.

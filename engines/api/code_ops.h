@@ -7,8 +7,9 @@
 #include <span>
 
 #include "bipc/ir/ir.h"
-#include "engines/interpreter/code_eval.h"
-#include "engines/value.h"
+#include "engines/api/compiled_model.h"
+#include "engines/api/externs.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines::code_ops {
 
@@ -51,7 +52,7 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
 [[gnu::always_inline]] inline Val load(Scope scope, Index index, std::uint16_t arg,
                                        const Frame& f) {
   if (scope == Scope::Clock) {
-    return make_float(CodeEvaluator::clock_value(f.clocks[index], f.clock_units[index], f.now));
+    return make_float(clock_value(f.clocks[index], f.clock_units[index], f.now));
   }
   return *slot(scope, index, arg, f);
 }
@@ -71,7 +72,7 @@ inline std::int64_t wrap_mul(std::int64_t a, std::int64_t b) {
 /// StoreRate: the clock keeps its value now and grows at the new rate from now on.
 [[gnu::always_inline]] inline void store_rate(Index clock_index, const Frame& f, Val rate) {
   ClockState& clock = f.clocks[clock_index];
-  clock.value_at = CodeEvaluator::clock_value(clock, f.clock_units[clock_index], f.now);
+  clock.value_at = clock_value(clock, f.clock_units[clock_index], f.now);
   clock.since = f.now;
   clock.rate = rate.f;
 }

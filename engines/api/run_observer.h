@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include "bipc/ir/ir.h"
-#include "engines/time_value.h"
-#include "engines/value.h"
+#include "engines/api/time_value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
 

@@ -7,14 +7,12 @@
 
 #include "bipc/errors.h"
 #include "bipc/ir/ir.h"
-#include "engines/engines.h"
-#include "engines/externs.h"
-#include "engines/model.h"
+#include "engines/api/externs.h"
+#include "engines/api/model.h"
+#include "engines/api/plugin_abi.h"  // kPluginAbi, generated from the API headers
+#include "engines/api/simulate.h"
 
 namespace smcbip::engines {
-
-/// Bumped whenever PluginEntry or the types it hands over change incompatibly.
-inline constexpr std::uint32_t kPluginAbi = 6;  // 6: leading comparisons in Layout
 
 /// A fingerprint of the layouts a plugin and its host must share (both compute it from the
 /// headers they were built with), to refuse a plugin built against other headers.

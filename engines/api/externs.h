@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
-#include "engines/time_value.h"
-#include "engines/value.h"
+#include "engines/api/time_value.h"
+#include "engines/api/value.h"
 
 namespace smcbip::engines {
 
