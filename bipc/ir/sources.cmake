@@ -4,6 +4,7 @@ list(APPEND BIPC_SOURCES
   ir/ir.cpp
   ir/clock_guard.cpp
   ir/data_guard.cpp
+  ir/simple_action.cpp
   ir/ir_json.cpp
   ir/ir_text.cpp
   ir/ir_dot.cpp

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "bipc/ir/simple_action.h"
 #include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/layout.h"
@@ -138,16 +139,50 @@ bipc::ir::Index interpreted_internal(const bipc::ir::System& system, const Layou
                                      bipc::ir::Index type, const std::uint8_t* marking,
                                      const Frame& f, ModelCode& eval);
 
-/// ModelCode::atom_fire by interpretation: the tokens move, then the action runs; false,
-/// before the action, when a token would land on a marked place.
-[[gnu::always_inline]] inline bool interpreted_fire(const bipc::ir::Transition& transition,
-                                                    std::uint8_t* marking, const Frame& f,
-                                                    ModelCode& eval) {
+/// The tokens of a firing move; false when one would land on a marked place.
+[[gnu::always_inline]] inline bool move_tokens(const bipc::ir::Transition& transition,
+                                               std::uint8_t* marking) {
   for (bipc::ir::Index p : transition.from) marking[p] = 0;
   for (bipc::ir::Index p : transition.to) {
     if (marking[p]) return false;
     marking[p] = 1;
   }
+  return true;
+}
+
+/// Runs a simple action (simple_action.h) on the frame's slots: the stores the interpreter
+/// would make, in its order, of the same values.
+[[gnu::always_inline]] inline void run_simple_action(const bipc::ir::SimpleAssignment* first,
+                                                     const bipc::ir::SimpleAssignment* end,
+                                                     const Frame& f) {
+  using Kind = bipc::ir::SimpleAssignment::Kind;
+  for (const bipc::ir::SimpleAssignment* a = first; a != end; ++a) {
+    switch (a->kind) {
+      case Kind::Int:
+        f.atom_data[a->target] = make_int(a->literal);
+        break;
+      case Kind::Float:
+        f.atom_data[a->target] = make_float(a->real);
+        break;
+      case Kind::AddInt:
+        f.atom_data[a->target] = make_int(
+            static_cast<std::int64_t>(static_cast<std::uint64_t>(f.atom_data[a->source].i) +
+                                      static_cast<std::uint64_t>(a->literal)));
+        break;
+      case Kind::ClockSet:
+        f.clocks[a->target].value_at = a->real;
+        f.clocks[a->target].since = f.now;
+        break;
+    }
+  }
+}
+
+/// ModelCode::atom_fire by interpretation: the tokens move, then the action runs; false,
+/// before the action, when a token would land on a marked place.
+[[gnu::always_inline]] inline bool interpreted_fire(const bipc::ir::Transition& transition,
+                                                    std::uint8_t* marking, const Frame& f,
+                                                    ModelCode& eval) {
+  if (!move_tokens(transition, marking)) return false;
   eval.execute(transition.action, f);
   return true;
 }

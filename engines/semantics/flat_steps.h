@@ -116,17 +116,20 @@ class FlatSteps final : public CompiledSteps {
   Outcome timed_step(bool at_limit, StepInfo& info) {
     const TimeValue now = state_->now;
     const std::uint32_t positions = position_count_;
-    Interval waiting = Interval::from(now);
-    for (std::uint32_t p = 0; p < positions; ++p) {
-      if (enabled_[p] == Flag::On && raw_[p].urgency != bipc::Urgency::Lazy) {
-        narrow(waiting, detail::wait(raw_[p], now));
-      }
-    }
+    // One pass lists the items from now on and gathers the waiting window; only when an item
+    // is not lazy (the window may then be cut) does a second pass over the listed ones cut them.
+    const Interval from_now = Interval::from(now);
+    Interval waiting = from_now;
+    bool waits = false;
     // items_ has room for every position (begin): an item is written in place and kept when
     // its window is not empty.
     std::size_t listed = 0;
     for (std::uint32_t p = 0; p < positions; ++p) {
       if (enabled_[p] == Flag::Off) continue;
+      if (raw_[p].urgency != bipc::Urgency::Lazy) {
+        narrow(waiting, detail::wait(raw_[p], now));
+        waits = true;
+      }
       // Copied field by field for the reason recompute_timed gives.
       Listed& item = items_[listed];
       item.position = p;
@@ -134,9 +137,11 @@ class FlatSteps final : public CompiledSteps {
       item.window.right = raw_[p].interval.right;
       item.window.left_open = raw_[p].interval.left_open;
       item.window.right_open = raw_[p].interval.right_open;
-      narrow(item.window, waiting);
+      narrow(item.window, from_now);
       listed += item.window.empty() ? 0 : 1;
     }
+    // Intersections commute: cutting by now and then by the waiting window is cutting by both.
+    if (waits) listed = cut_to(waiting, listed);
     items_count_ = listed;
     if (listed == 0) {
       return waiting.right == kPlusInfinity ? Outcome::Deadlock : Outcome::Timelock;
@@ -155,6 +160,19 @@ class FlatSteps final : public CompiledSteps {
       if (!choice) return Outcome::Timelock;
     }
     return fire<true>(items_[choice->first].position, choice->second, info);
+  }
+
+  /// Cuts the first `listed` items' windows to `waiting`, keeping the non-empty ones in order;
+  /// how many are kept.
+  std::size_t cut_to(const Interval& waiting, std::size_t listed) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < listed; ++i) {
+      narrow(items_[i].window, waiting);
+      if (items_[i].window.empty()) continue;
+      if (kept != i) items_[kept] = items_[i];
+      ++kept;
+    }
+    return kept;
   }
 
   /// Scheduler::race over items_: DatePlanner::plan's kept or new dates, then the earliest in

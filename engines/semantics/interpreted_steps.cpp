@@ -1,6 +1,11 @@
 // The flat step path over an interpreted model.
 #include "engines/semantics/interpreted_steps.h"
 
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "bipc/ir/simple_action.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/atom_steps.h"
 #include "engines/semantics/flat_steps.h"
@@ -14,7 +19,20 @@ namespace {
 class InterpretedAtoms final : public ModelCode {
  public:
   InterpretedAtoms(CodeEvaluator& eval, const bipc::ir::System& system, const Layout& layout)
-      : eval_(eval), system_(system), layout_(layout) {}
+      : eval_(eval), system_(system), layout_(layout) {
+    for (const bipc::ir::AtomType& type : system.atom_types) {
+      first_action_.push_back(static_cast<std::uint32_t>(actions_.size()));
+      for (const bipc::ir::Transition& transition : type.transitions) {
+        Action action;
+        if (auto simple = bipc::ir::simple_action(transition.action)) {
+          action.first = static_cast<std::uint32_t>(assignments_.size());
+          assignments_.insert(assignments_.end(), simple->begin(), simple->end());
+          action.end = static_cast<std::uint32_t>(assignments_.size());
+        }
+        actions_.push_back(action);
+      }
+    }
+  }
 
   Val evaluate(const bipc::ir::Code& code, const Frame& frame) override {
     return eval_.evaluate(code, frame);
@@ -36,14 +54,28 @@ class InterpretedAtoms final : public ModelCode {
   }
   bool atom_fire(bipc::ir::Index type, bipc::ir::Index transition, std::uint8_t* marking,
                  const Frame& frame) override {
-    return interpreted_fire(system_.atom_types[type].transitions[transition], marking, frame,
-                            eval_);
+    const bipc::ir::Transition& tr = system_.atom_types[type].transitions[transition];
+    const Action& action = actions_[first_action_[type] + transition];
+    if (action.first == kInterpreted) return interpreted_fire(tr, marking, frame, eval_);
+    if (!move_tokens(tr, marking)) return false;
+    run_simple_action(assignments_.data() + action.first, assignments_.data() + action.end, frame);
+    return true;
   }
 
  private:
+  /// A transition's action: its assignments in assignments_, or kInterpreted.
+  static constexpr std::uint32_t kInterpreted = 0xFFFFFFFFu;
+  struct Action {
+    std::uint32_t first = kInterpreted, end = 0;
+  };
+
   CodeEvaluator& eval_;
   const bipc::ir::System& system_;
   const Layout& layout_;
+  // Per atom type its first transition's entry in actions_; the simple actions' assignments.
+  std::vector<std::uint32_t> first_action_;
+  std::vector<Action> actions_;
+  std::vector<bipc::ir::SimpleAssignment> assignments_;
 };
 
 /// The flat steps with the interpreter they call.

@@ -2,5 +2,7 @@
 list(APPEND ENGINES_TEST_SOURCES clock_bounds_test.cpp)
 # Guards led by an integer comparison, tested before (or instead of) interpreting them.
 list(APPEND ENGINES_TEST_SOURCES leading_comparison_test.cpp value_dispatch_test.cpp)
+# Actions of plain assignments, run straight on the slots.
+list(APPEND ENGINES_TEST_SOURCES simple_action_test.cpp)
 # Faults of the model's code at run time, reported at their place in the model.
 list(APPEND ENGINES_TEST_SOURCES model_faults_test.cpp)
