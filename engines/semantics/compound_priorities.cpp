@@ -217,7 +217,7 @@ void CompoundPriorities::dominate(InteractionValue& value, const std::vector<Pri
     if (!applies_low(rule, low) || !rule_guard(rule)) continue;
     high_side(rule, highs);
     for (const RuleNode& high : highs) {
-      compute_(compute_context_, high.first);
+      connectors_.compute_connector(high.first);
       for (Index w : connector_values_[high.first]) {
         const InteractionValue& other = values_[w];
         if (other.ports == high.second || (maximal_progress_ && subset(high.second, other.ports))) {

@@ -13,6 +13,7 @@
 #include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/connector_cache.h"
+#include "engines/semantics/connector_values.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime_types.h"
@@ -22,29 +23,23 @@ namespace smcbip::engines {
 /// Applies the priorities of a run to its connectors' interaction values. It reads the state,
 /// the values and their lists per connector, which its owner keeps, and notes in the
 /// connector cache which results depend on time and which connectors are urgent. A rule's high
-/// side may name a connector not computed yet: `compute` computes it.
+/// side may name a connector not computed yet: `connectors` computes it.
 class CompoundPriorities {
  public:
-  /// Computes the values of a connector (a no-op when they are up to date).
-  using ComputeConnector = void (*)(void* context, Index connector);
-
   CompoundPriorities(const bipc::ir::System& system, const Layout& layout, bool maximal_progress,
                      ModelCode& eval, RunState& state, ModelError& error,
-                     std::vector<InteractionValue>& values,
-                     const std::vector<IndexList>& connector_values, ConnectorCache& cache,
-                     const Interval& time_bound, ComputeConnector compute, void* compute_context)
+                     ConnectorValues& connectors, ConnectorCache& cache, const Interval& time_bound)
       : system_(system),
         layout_(layout),
         maximal_progress_(maximal_progress),
         eval_(eval),
         state_(state),
         error_(error),
-        values_(values),
-        connector_values_(connector_values),
+        connectors_(connectors),
+        values_(connectors.values()),
+        connector_values_(connectors.connector_values()),
         cache_(cache),
-        time_bound_(time_bound),
-        compute_(compute),
-        compute_context_(compute_context) {}
+        time_bound_(time_bound) {}
 
   /// False with error 3 set when the active rules of a compound form a cycle.
   bool check_cycles();
@@ -82,12 +77,11 @@ class CompoundPriorities {
   ModelCode& eval_;
   RunState& state_;
   ModelError& error_;
+  ConnectorValues& connectors_;
   std::vector<InteractionValue>& values_;
   const std::vector<IndexList>& connector_values_;
   ConnectorCache& cache_;
   const Interval& time_bound_;  // the owner's bound of the state the items are computed in
-  ComputeConnector compute_;
-  void* compute_context_;
   // Per compound: the sets of active priority rules already found free of cycles.
   std::vector<std::set<std::vector<bool>>> acyclic_rule_sets_;
   std::vector<bool> active_rules_;  // check_cycles' buffer

@@ -1,5 +1,5 @@
 // The BIP semantics of one run: atom offers, timing constraints and execution. Connector
-// interactions: runtime_connectors.cpp; priorities: compound_priorities.cpp and
+// interactions: connector_values.cpp; priorities: compound_priorities.cpp and
 // atom_priorities.cpp; items: item_listing.cpp; extern ports: extern_ports.cpp; traces:
 // runtime_trace.cpp. Follows the Verimag reference engine.
 #include "engines/semantics/runtime.h"
@@ -33,20 +33,18 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
       code_(model.make_code(functions, call_)),
       eval_(*code_),
       options_(options),
-      maximal_progress_(options.maximal_progress),
       cache_(system_, layout),
+      connectors_(system_, layout, options, eval_, state_, port_values_, port_offset_, cache_,
+                  listing_, priorities_),
       extern_ports_(system_, layout, functions, state_, port_values_, port_offset_, error_),
-      listing_(system_, layout, state_, values_, connector_values_, port_values_, port_offset_,
-               extern_ports_, options.incremental),
-      priorities_(system_, layout, options.maximal_progress, eval_, state_, error_, values_,
-                  connector_values_, cache_, time_bound_, &Runtime::compute_connector_of, this) {
+      listing_(system_, layout, state_, connectors_.values(), connectors_.connector_values(),
+               port_values_, port_offset_, extern_ports_, options.incremental),
+      priorities_(system_, layout, options.maximal_progress, eval_, state_, error_, connectors_,
+                  cache_, time_bound_) {
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     port_offset_.push_back(port_values_.size());
-    for (const bipc::ir::Port& port : system_.atom_types[system_.atoms[a].type].ports) {
-      port_values_.emplace_back();
-      port_data_begin_.push_back(port_data_slots_.size());
-      for (Index slot : port.data) port_data_slots_.push_back(layout.atom_data[a] + slot);
-    }
+    port_values_.resize(port_values_.size() +
+                        system_.atom_types[system_.atoms[a].type].ports.size());
   }
   for (Index a = 0; a < system_.atoms.size(); ++a) {
     const bool has_clocks = !system_.atom_types[system_.atoms[a].type].clocks.empty();
@@ -60,9 +58,7 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
   atom_invariant_.assign(system_.atoms.size(), Interval::all());
   bounding_atoms_.reset(system_.atoms.size());
   resuming_atoms_.reset(system_.atoms.size());
-  index_single_atom_ports();
-  index_required_offers();
-  index_direct_connectors();
+  connectors_.index();
   if (options.threads > 1) {
     parallel_ = std::make_unique<ParallelFiring>(model, functions, call_, options.threads);
   }
@@ -293,9 +289,9 @@ bool Runtime::compute_items() {
   if (!priorities_.check_cycles()) return false;
   const bool full = !options_.incremental || cache_.all_stale();
   listing_.note_internal_ports(full, cache_);
-  begin_values(full);
+  connectors_.begin(full);
   try {
-    compute_values(full);
+    connectors_.compute(full);
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
     return fail(fault);
@@ -315,8 +311,8 @@ Interval Runtime::wait_interval() const {
   Interval w = Interval::from(state_.now);
   for (Index k : cache_.urgent()) {
     if (listing_.listed_position(k) == kNone) continue;
-    for (Index v : connector_values_[k]) {
-      const InteractionValue& value = values_[v];
+    for (Index v : connectors_.connector_values()[k]) {
+      const InteractionValue& value = connectors_.values()[v];
       if (value.raw.urgency == Urgency::Lazy || value.after.interval.empty()) continue;
       narrow(w, wait(value.raw, state_.now));
     }
@@ -343,11 +339,11 @@ Interval Runtime::time_bound() const {
 // Execution.
 
 void Runtime::run_down(Index index) {
-  InteractionValue& value = values_[index];
+  InteractionValue& value = connectors_.values()[index];
   const auto& type = system_.connector_types[system_.connectors[value.connector].type];
   const int code = value.code;
   if (code >= 0) {
-    const PortContext context{this, &value};
+    const PortContext context{&connectors_, &value};
     eval_.execute(type.interactions[static_cast<std::size_t>(code)].down,
                   connector_frame(value, context, state_.now));
   }
@@ -360,7 +356,7 @@ bool Runtime::execute_value(Index index) {
   run_down(index);
   // Ports run in the interaction's port order, depth first: a sub-connector's down comes after
   // the atoms of earlier ports have executed (reference engine order).
-  for (const PortValue& pv : values_[index].choice) {
+  for (const PortValue& pv : connectors_.values()[index].choice) {
     if (pv.from_atom ? !fire_port(pv.atom, pv.port) : !execute_value(pv.sub)) return false;
   }
   return true;
@@ -386,7 +382,7 @@ void Runtime::append_atom_ports(const Item& item, std::vector<std::pair<Index, I
 }
 
 void Runtime::append_value_ports(Index value, std::vector<std::pair<Index, Index>>& out) const {
-  for (const PortValue& pv : values_[value].choice) {
+  for (const PortValue& pv : connectors_.values()[value].choice) {
     if (pv.from_atom) {
       out.emplace_back(pv.atom, pv.port);
     } else {

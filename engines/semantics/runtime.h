@@ -19,6 +19,7 @@
 #include "engines/semantics/atom_priorities.h"
 #include "engines/semantics/compound_priorities.h"
 #include "engines/semantics/connector_cache.h"
+#include "engines/semantics/connector_values.h"
 #include "engines/semantics/extern_ports.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/index_set.h"
@@ -70,7 +71,7 @@ class Runtime {
   const Interval& items_window() const { return listing_.window(); }
   /// Interaction values by index (Item::value, PortValue::sub). The optimised scheduler reuses
   /// slots, so slots no item or value refers to may hold values of earlier steps.
-  const std::vector<InteractionValue>& values() const { return values_; }
+  const std::vector<InteractionValue>& values() const { return connectors_.values(); }
   const ModelError& error() const { return error_; }
   /// The model's code this runtime runs on (its thread's).
   ModelCode& code() { return eval_; }
@@ -128,21 +129,6 @@ class Runtime {
       return false;
     }
   };
-  // Reusable buffers of compute_connector, one per depth of sub-connector recursion.
-  struct ConnectorScratch {
-    std::vector<PortValue> offers;           // the ports' offers, port after port
-    std::vector<std::uint32_t> first_offer;  // per port, its first offer; then offers.size()
-    std::vector<Index> members;              // the ports of the port set being combined
-    std::vector<std::uint32_t> pick;         // per member, the offer of the combination
-    std::vector<std::uint8_t> enabled;       // per port parameter: whether it has an offer
-  };
-  // What the values of one port set of a connector share.
-  struct ValueShape {
-    Index connector = 0;
-    std::uint32_t defined = 0;  // InteractionValue::defined
-    PortSet ports = 0;
-    int code = -1;  // InteractionValue::code
-  };
   // Passed by reference: a copy made on the stack per call stalled on store forwarding.
   const AtomScratch& main_scratch() const { return main_scratch_; }
   Frame atom_frame(Index atom);
@@ -165,61 +151,6 @@ class Runtime {
                        const Frame& f);
   bool check_invariants(Index atom) { return check_invariants(main_scratch(), atom); }
   bool check_invariants(const AtomScratch& s, Index atom);
-  void compute_connector(Index connector);
-  /// Fills required_offers_ and has_sub_connectors_.
-  void index_required_offers();
-  /// Whether a port every interaction of the connector contains binds only atom ports, none of
-  /// which offers anything: then the connector has no interaction.
-  bool misses_required_atom_port(Index connector) const;
-  /// Whether the connector had no values and, its atoms' offers being what they are, still
-  /// has none: the optimised scheduler then leaves it as it is.
-  bool keeps_no_values(Index connector) const;
-  /// Computes the connectors bound to the connector's ports, in port order.
-  void compute_sub_connectors(Index connector);
-  /// Frees the connector's values of the last computation.
-  void release_values(Index connector);
-  /// Whether the connector's values may come from add_largest_values: a maximal_only connector
-  /// under maximal progress that is not a rendezvous (one defined interaction is its own
-  /// largest, and enumerating it is as quick).
-  bool tries_largest(Index connector) const;
-  /// The connector's interaction values, from its ports' offers.
-  void compute_interactions(Index connector);
-  /// Per port parameter, the offers of the atom ports and sub-connectors it binds.
-  void gather_offers(Index connector, ConnectorScratch& scratch);
-  /// Values of a maximal_only connector under maximal progress when its offers allow
-  /// (maximal_interaction.h); false when they do not and the defined ones must be enumerated.
-  bool add_largest_values(Index connector, ConnectorScratch& scratch);
-  /// The values of defined interaction `d`: one per combination of its ports' offers.
-  void add_interactions(Index connector, std::uint32_t d, ConnectorScratch& scratch);
-  /// The values of a port set (`scratch.members`, increasing; `scratch.pick` at their first
-  /// offers): one per combination of the members' offers, the last member varying fastest.
-  void add_combinations(const ValueShape& shape, ConnectorScratch& scratch);
-  /// compute_interactions for a connector whose ports each bind one atom port.
-  void compute_single_offer_interactions(Index connector);
-  /// Fills single_atom_ports_.
-  void index_single_atom_ports();
-  /// Tells the cache which connectors have values from their offers alone
-  /// (ConnectorCache::note_offers_only); after index_single_atom_ports.
-  void index_direct_connectors();
-  /// A new value of the shape, with no port chosen yet.
-  [[gnu::always_inline]] inline Index start_value(const ValueShape& shape);
-  /// Chooses the offer for the value's next port.
-  [[gnu::always_inline]] static inline void add_choice(InteractionValue& value,
-                                                       const PortValue& offer);
-  /// Keeps the value among the connector's if its constraint and guard allow, else frees it.
-  void keep_value_if_allowed(Index connector, Index slot);
-  /// Copies the connector's data into the value and runs the guard, then `up` if it holds.
-  bool connector_code_allows(InteractionValue& value);
-  /// A free slot of values_ for a new value (its vectors keep their capacity).
-  [[gnu::always_inline]] inline Index acquire_value();
-  void begin_values(bool full);
-  /// Every connector's values, or (incremental) those of the connectors the cache finds stale.
-  void compute_values(bool full);
-  void compute_compound(const std::vector<Index>& connectors);
-  /// The connector's values after priorities (CompoundPriorities::recompute), counted.
-  void recompute_priorities(Index connector);
-  /// compute_connector for CompoundPriorities.
-  static void compute_connector_of(void* runtime, Index connector);
   /// The atoms' clock invariants and pending resume windows intersected: time cannot pass
   /// beyond it whatever is chosen.
   Interval time_bound() const;
@@ -260,7 +191,6 @@ class Runtime {
   std::unique_ptr<ModelCode> code_;
   ModelCode& eval_;  // *code_
   RuntimeOptions options_;
-  bool maximal_progress_;
   RunState state_;
   ModelError error_;
   AtomPriorities atom_priorities_;  // the main thread's
@@ -279,42 +209,14 @@ class Runtime {
   // Per atom port (flattened by atom, port): its offer, if any.
   std::vector<std::size_t> port_offset_;
   std::vector<std::optional<AtomPortValue>> port_values_;
-  // Per atom port (flattened likewise): its first entry in port_data_slots_, which lists the
-  // state slots of the ports' parameters (connector code reads and writes them).
-  std::vector<std::size_t> port_data_begin_;
-  std::vector<std::size_t> port_data_slots_;
   std::vector<Interval> atom_invariant_;  // time bound of each atom's clock invariants
   Interval time_bound_;                   // time_bound() of the state items are computed in
   // The atoms whose pending resume or invariant bounds the time that may pass (the others
   // leave wait_interval as it is), and those with a pending resume.
   IndexSet bounding_atoms_, resuming_atoms_;
   std::vector<Index> resume_order_;  // resume_atoms' buffer
-  // Per connector: enabled interaction values (indices into values_), computed bottom up. The
-  // optimised scheduler keeps them between steps: values_ is then a pool whose free slots are
-  // listed in free_values_.
-  std::vector<IndexList> connector_values_;
-  // Per connector whose port parameters each bind exactly one atom port: those atom ports, in
-  // parameter order (empty for other connectors).
-  struct SingleAtomPort {
-    Index atom = 0, port = 0;
-    std::size_t offer = 0;  // index into port_values_
-  };
-  std::vector<std::vector<SingleAtomPort>> single_atom_ports_;
-  // Per connector: the atom ports bound to its port parameters that every defined interaction
-  // contains (parameters binding atom ports only), parameter by parameter; and whether a
-  // parameter binds a sub-connector.
-  struct RequiredOffer {
-    Index atom = 0;
-    std::size_t port_value = 0;  // index into port_values_
-    bool ends_group = false;     // the last atom port of its parameter
-  };
-  std::vector<std::vector<RequiredOffer>> required_offers_;
-  std::vector<std::uint8_t> has_sub_connectors_;
-  std::vector<InteractionValue> values_;
-  std::vector<Index> free_values_;
-  std::deque<ConnectorScratch> scratch_;  // deque: outer frames keep their references
-  std::size_t scratch_depth_ = 0;
   ConnectorCache cache_;
+  ConnectorValues connectors_;
   ExternPorts extern_ports_;
   ItemListing listing_;
   CompoundPriorities priorities_;

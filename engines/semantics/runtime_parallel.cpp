@@ -107,7 +107,7 @@ std::size_t Runtime::run_downs(Index index, std::optional<CodeFault>& fault) {
   std::size_t atoms_so_far = 0;
   std::function<void(Index)> downs = [&](Index value) {
     run_down(value);
-    for (const PortValue& pv : values_[value].choice) {
+    for (const PortValue& pv : connectors_.values()[value].choice) {
       if (pv.from_atom) {
         ++atoms_so_far;
       } else {

@@ -27,7 +27,7 @@ std::string Runtime::format_ports(const InteractionValue& value) const {
       port_type = &system_.port_types[port.type];
       for (Index slot : port.data) values.push_back(state_.data[layout_.atom_data[pv.atom] + slot]);
     } else {
-      const InteractionValue& sub = values_[pv.sub];
+      const InteractionValue& sub = connectors_.values()[pv.sub];
       const auto& type = system_.connector_types[system_.connectors[sub.connector].type];
       if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
       for (Index slot : type.export_data) values.push_back(sub.data[slot]);
@@ -66,8 +66,8 @@ std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
     return format_interval(c.interval) + " " + urgency_name(c.urgency);
   };
   for (Index k : layout_.listed_connectors) {
-    for (Index v : connector_values_[k]) {
-      const InteractionValue& value = values_[v];
+    for (Index v : connectors_.connector_values()[k]) {
+      const InteractionValue& value = connectors_.values()[v];
       if (value.after.interval.empty() || !late(value.raw)) continue;
       lines.push_back(layout_.connector_names[k] + ": " + format_ports(value) + " " +
                       constraint_text(value.raw));

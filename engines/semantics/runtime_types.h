@@ -30,7 +30,7 @@ struct RunState {
 struct PortValue {
   bool from_atom = true;
   Index atom = 0, port = 0;     // atom offers
-  Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values_
+  Index sub = bipc::ir::kNone;  // sub-connector offers: index into Runtime::values()
   Constraint constraint;
   Index param = 0;  // the connector's port parameter this value is offered to
 };

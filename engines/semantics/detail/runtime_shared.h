@@ -43,9 +43,9 @@ inline Interval wait(const Constraint& c, TimeValue now) {
   return Interval::from(now);
 }
 
-/// What connector code runs over: the runtime and one interaction value.
+/// What connector code runs over: the connectors' values and one of them.
 struct PortContext {
-  Runtime* runtime;
+  ConnectorValues* connectors;
   const InteractionValue* value;
 };
 
@@ -74,20 +74,8 @@ inline const PortValue& chosen(const InteractionValue& v, Index port) {
 
 }  // namespace detail
 
-/// Where connector code finds its port parameters and other atoms' data (Frame callbacks).
+/// Where atom code finds other atoms' data (Frame callback).
 struct RuntimeDetail {
-  static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
-    const auto& c = *static_cast<const detail::PortContext*>(context);
-    const PortValue& pv = detail::chosen(*c.value, port);
-    Runtime& r = *c.runtime;
-    if (pv.from_atom) {
-      const std::size_t first = r.port_data_begin_[r.port_offset_[pv.atom] + pv.port];
-      return &r.state_.data[r.port_data_slots_[first + arg]];
-    }
-    InteractionValue& sub = r.values_[pv.sub];
-    const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
-    return &sub.data[type.export_data[arg]];
-  }
   static Val* instance_slot(const void* context, Index atom, std::uint16_t slot) {
     Runtime& r = *const_cast<Runtime*>(static_cast<const Runtime*>(context));
     return &r.state_.data[r.layout_.atom_data[atom] + slot];
@@ -100,7 +88,7 @@ namespace detail {
 inline Frame connector_frame(InteractionValue& value, const PortContext& context, TimeValue now) {
   Frame f;
   f.connector_data = value.data.data();
-  f.port_slot = &RuntimeDetail::port_slot;
+  f.port_slot = &ConnectorValues::port_slot;
   f.port_context = &context;
   f.now = now;
   return f;

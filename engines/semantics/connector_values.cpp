@@ -1,9 +1,13 @@
 // Connector interactions of one run: which connectors can have values, their values built
 // from their ports' offers, and the optimised scheduler's reuse of unchanged ones.
+#include "engines/semantics/connector_values.h"
+
 #include <algorithm>
 #include <bit>
 
+#include "engines/semantics/compound_priorities.h"
 #include "engines/semantics/detail/runtime_shared.h"
+#include "engines/semantics/item_listing.h"
 #include "engines/semantics/maximal_interaction.h"
 
 namespace smcbip::engines {
@@ -13,7 +17,53 @@ using detail::add_offer_constraint;
 using detail::connector_frame;
 using detail::PortContext;
 
-void Runtime::index_required_offers() {
+ConnectorValues::ConnectorValues(const bipc::ir::System& system, const Layout& layout,
+                                 const RuntimeOptions& options, ModelCode& eval, RunState& state,
+                                 const std::vector<std::optional<AtomPortValue>>& port_values,
+                                 const std::vector<std::size_t>& port_offset, ConnectorCache& cache,
+                                 ItemListing& listing, CompoundPriorities& priorities)
+    : system_(system),
+      layout_(layout),
+      incremental_(options.incremental),
+      maximal_progress_(options.maximal_progress),
+      eval_(eval),
+      state_(state),
+      port_values_(port_values),
+      port_offset_(port_offset),
+      cache_(cache),
+      listing_(listing),
+      priorities_(priorities) {}
+
+void ConnectorValues::index() {
+  index_port_data();
+  index_single_atom_ports();
+  index_required_offers();
+  index_direct_connectors();
+}
+
+void ConnectorValues::index_port_data() {
+  for (Index a = 0; a < system_.atoms.size(); ++a) {
+    for (const bipc::ir::Port& port : system_.atom_types[system_.atoms[a].type].ports) {
+      port_data_begin_.push_back(port_data_slots_.size());
+      for (Index slot : port.data) port_data_slots_.push_back(layout_.atom_data[a] + slot);
+    }
+  }
+}
+
+Val* ConnectorValues::port_slot(const void* context, Index port, std::uint16_t arg) {
+  const auto& c = *static_cast<const detail::PortContext*>(context);
+  const PortValue& pv = detail::chosen(*c.value, port);
+  ConnectorValues& r = *c.connectors;
+  if (pv.from_atom) {
+    const std::size_t first = r.port_data_begin_[r.port_offset_[pv.atom] + pv.port];
+    return &r.state_.data[r.port_data_slots_[first + arg]];
+  }
+  InteractionValue& sub = r.values_[pv.sub];
+  const auto& type = r.system_.connector_types[r.system_.connectors[sub.connector].type];
+  return &sub.data[type.export_data[arg]];
+}
+
+void ConnectorValues::index_required_offers() {
   required_offers_.resize(system_.connectors.size());
   has_sub_connectors_.assign(system_.connectors.size(), 0);
   for (Index k = 0; k < system_.connectors.size(); ++k) {
@@ -35,7 +85,7 @@ void Runtime::index_required_offers() {
   }
 }
 
-bool Runtime::misses_required_atom_port(Index k) const {
+bool ConnectorValues::misses_required_atom_port(Index k) const {
   bool offered = false;
   for (const RequiredOffer& r : required_offers_[k]) {
     offered = offered || (!state_.resume_pending[r.atom] && port_values_[r.port_value]);
@@ -46,7 +96,7 @@ bool Runtime::misses_required_atom_port(Index k) const {
   return false;
 }
 
-void Runtime::index_single_atom_ports() {
+void ConnectorValues::index_single_atom_ports() {
   single_atom_ports_.resize(system_.connectors.size());
   for (Index k = 0; k < system_.connectors.size(); ++k) {
     const auto& bound = system_.connectors[k].bound;
@@ -63,8 +113,8 @@ void Runtime::index_single_atom_ports() {
   }
 }
 
-void Runtime::index_direct_connectors() {
-  if (!options_.incremental) return;
+void ConnectorValues::index_direct_connectors() {
+  if (!incremental_) return;
   for (Index k = 0; k < system_.connectors.size(); ++k) {
     // Single atom ports only: no sub-connector.
     bool offers_only = !single_atom_ports_[k].empty();
@@ -76,7 +126,7 @@ void Runtime::index_direct_connectors() {
   }
 }
 
-void Runtime::compute_sub_connectors(Index k) {
+void ConnectorValues::compute_sub_connectors(Index k) {
   if (!has_sub_connectors_[k]) return;
   for (const auto& refs : system_.connectors[k].bound) {
     for (const bipc::ir::PortRef& ref : refs) {
@@ -85,16 +135,12 @@ void Runtime::compute_sub_connectors(Index k) {
   }
 }
 
-void Runtime::compute_connector_of(void* runtime, Index k) {
-  static_cast<Runtime*>(runtime)->compute_connector(k);
-}
-
-void Runtime::recompute_priorities(Index k) {
+void ConnectorValues::recompute_priorities(Index k) {
   priorities_.recompute(k);
   listing_.count_connector(k);
 }
 
-void Runtime::compute_connector(Index k) {
+void ConnectorValues::compute_connector(Index k) {
   if (!cache_.claim(k)) return;
   release_values(k);
   if (!single_atom_ports_[k].empty()) {
@@ -111,7 +157,7 @@ void Runtime::compute_connector(Index k) {
   compute_interactions(k);
 }
 
-void Runtime::release_values(Index k) {
+void ConnectorValues::release_values(Index k) {
   // Connectors binding this one are stale too, so nothing refers to its old values any more.
   if (connector_values_[k].empty()) return;
   for (Index v : connector_values_[k]) free_values_.push_back(v);
@@ -119,12 +165,12 @@ void Runtime::release_values(Index k) {
   listing_.note_no_values(k);
 }
 
-bool Runtime::tries_largest(Index k) const {
+bool ConnectorValues::tries_largest(Index k) const {
   return layout_.maximal_only[k] && maximal_progress_ &&
          (!layout_.enumerated[k] || layout_.defined[k].size() > 1);
 }
 
-void Runtime::compute_interactions(Index k) {
+void ConnectorValues::compute_interactions(Index k) {
   // Scratch per recursion depth (sub-connectors are computed from inside gather_offers).
   if (scratch_depth_ == scratch_.size()) scratch_.emplace_back();
   ConnectorScratch& scratch = scratch_[scratch_depth_];
@@ -144,7 +190,7 @@ void Runtime::compute_interactions(Index k) {
   for (std::uint32_t d = 0; d < defined; ++d) add_interactions(k, d, scratch);
 }
 
-void Runtime::gather_offers(Index k, ConnectorScratch& scratch) {
+void ConnectorValues::gather_offers(Index k, ConnectorScratch& scratch) {
   const bipc::ir::ConnectorInstance& connector = system_.connectors[k];
   std::vector<PortValue>& offers = scratch.offers;
   offers.clear();
@@ -171,7 +217,7 @@ void Runtime::gather_offers(Index k, ConnectorScratch& scratch) {
   scratch.first_offer.push_back(static_cast<std::uint32_t>(offers.size()));
 }
 
-bool Runtime::add_largest_values(Index k, ConnectorScratch& scratch) {
+bool ConnectorValues::add_largest_values(Index k, ConnectorScratch& scratch) {
   // Every smaller interaction is dominated by the largest for good only when they all offer
   // one constraint open to the right: it restricts them to after its window, which never ends.
   const Constraint* common = nullptr;
@@ -201,7 +247,7 @@ bool Runtime::add_largest_values(Index k, ConnectorScratch& scratch) {
   return true;
 }
 
-void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scratch) {
+void ConnectorValues::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scratch) {
   const std::vector<std::uint32_t>& first = scratch.first_offer;
   const DefinedInteraction& defined = layout_.defined[k][d];
   scratch.members.clear();
@@ -215,7 +261,7 @@ void Runtime::add_interactions(Index k, std::uint32_t d, ConnectorScratch& scrat
   add_combinations({k, d, defined.ports, defined.code}, scratch);
 }
 
-void Runtime::add_combinations(const ValueShape& shape, ConnectorScratch& scratch) {
+void ConnectorValues::add_combinations(const ValueShape& shape, ConnectorScratch& scratch) {
   const std::vector<std::uint32_t>& first = scratch.first_offer;
   const std::vector<Index>& members = scratch.members;
   std::vector<std::uint32_t>& pick = scratch.pick;
@@ -235,7 +281,7 @@ void Runtime::add_combinations(const ValueShape& shape, ConnectorScratch& scratc
   }
 }
 
-inline Index Runtime::acquire_value() {
+inline Index ConnectorValues::acquire_value() {
   // Slots are reused with their vectors' capacity: no allocation once the pool has grown.
   if (free_values_.empty()) {
     values_.emplace_back();
@@ -247,7 +293,7 @@ inline Index Runtime::acquire_value() {
   return slot;
 }
 
-inline Index Runtime::start_value(const ValueShape& shape) {
+inline Index ConnectorValues::start_value(const ValueShape& shape) {
   const Index slot = acquire_value();
   InteractionValue& value = values_[slot];
   value.connector = shape.connector;
@@ -258,17 +304,19 @@ inline Index Runtime::start_value(const ValueShape& shape) {
   return slot;
 }
 
-inline void Runtime::add_choice(InteractionValue& value, const PortValue& offer) {
+inline void ConnectorValues::add_choice(InteractionValue& value, const PortValue& offer) {
   value.choice.push_back(offer);
   add_offer_constraint(value.raw, offer.constraint);
 }
 
-void Runtime::compute_single_offer_interactions(Index k) {
+void ConnectorValues::compute_single_offer_interactions(Index k) {
   // Each port offers at most once: one combination per defined interaction whose ports all do.
   const std::vector<SingleAtomPort>& ports = single_atom_ports_[k];
+  // The offers through one pointer: the owner's vector would be loaded again after each write.
+  const std::optional<AtomPortValue>* const offers = port_values_.data();
   PortSet offering = 0;
   for (std::size_t i = 0; i < ports.size(); ++i) {
-    if (!state_.resume_pending[ports[i].atom] && port_values_[ports[i].offer]) {
+    if (!state_.resume_pending[ports[i].atom] && offers[ports[i].offer]) {
       offering |= PortSet{1} << i;
     }
   }
@@ -286,7 +334,7 @@ void Runtime::compute_single_offer_interactions(Index k) {
       offer.atom = port.atom;
       offer.port = port.port;
       offer.param = param;
-      const Constraint& offered = port_values_[port.offer]->constraint;
+      const Constraint& offered = offers[port.offer]->constraint;
       offer.constraint = offered;
       add_offer_constraint(value.raw, offered);  // the offer, not its copy just written
     }
@@ -294,7 +342,7 @@ void Runtime::compute_single_offer_interactions(Index k) {
   }
 }
 
-void Runtime::keep_value_if_allowed(Index k, Index slot) {
+void ConnectorValues::keep_value_if_allowed(Index k, Index slot) {
   InteractionValue& value = values_[slot];
   if (!value.raw.interval.empty() && connector_code_allows(value)) {
     value.after = value.raw;
@@ -305,7 +353,7 @@ void Runtime::keep_value_if_allowed(Index k, Index slot) {
   }
 }
 
-bool Runtime::connector_code_allows(InteractionValue& value) {
+bool ConnectorValues::connector_code_allows(InteractionValue& value) {
   const Index k = value.connector;
   const auto& type = system_.connector_types[system_.connectors[k].type];
   const auto data = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.connector_data[k]);
@@ -321,7 +369,7 @@ bool Runtime::connector_code_allows(InteractionValue& value) {
   return true;
 }
 
-void Runtime::begin_values(bool full) {
+void ConnectorValues::begin(bool full) {
   if (full) {
     // Every slot becomes free, keeping its vectors for reuse.
     free_values_.clear();
@@ -333,23 +381,25 @@ void Runtime::begin_values(bool full) {
   cache_.begin(state_.now, full, [this](Index k) { return keeps_no_values(k); });
 }
 
-bool Runtime::keeps_no_values(Index k) const {
+bool ConnectorValues::keeps_no_values(Index k) const {
   // Connectors binding sub-connectors are always recomputed: that computes their
   // sub-connectors in the usual order.
   return connector_values_[k].empty() && !has_sub_connectors_[k] && misses_required_atom_port(k);
 }
 
-void Runtime::compute_compound(const std::vector<Index>& connectors) {
-  // All values of the compound first: priorities compare them with each other.
+void ConnectorValues::compute_compound(const std::vector<Index>& connectors) {
+  // All values of the compound first: priorities compare them with each other. The cache is
+  // read through a local reference, which the calls leave in a register.
+  ConnectorCache& cache = cache_;
   for (Index k : connectors) {
-    if (cache_.stale(k)) compute_connector(k);
+    if (cache.stale(k)) compute_connector(k);
   }
   for (Index k : connectors) {
-    if (cache_.needs_priorities(k)) recompute_priorities(k);
+    if (cache.needs_priorities(k)) recompute_priorities(k);
   }
 }
 
-void Runtime::compute_values(bool full) {
+void ConnectorValues::compute(bool full) {
   // Compounds bottom-up: a compound export of a sub-connector needs its values after
   // priorities. Deeper compounds have larger indices than their parents.
   if (full) {
