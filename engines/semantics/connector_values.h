@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "bipc/ir/ir.h"
+#include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
-#include "engines/model.h"
 #include "engines/semantics/connector_cache.h"
 #include "engines/semantics/index_list.h"
 #include "engines/semantics/layout.h"
