@@ -4,16 +4,16 @@
 
 #include <cmath>
 
-#include "engines/interpreter/code_eval.h"
+#include "engines/api/compiled_model.h"
 
 namespace smcbip::engines {
 
-/// CodeEvaluator::clock_value, to the bit, without its division where it is not needed: at
+/// clock_value (compiled_model.h), to the bit, without its division where it is not needed: at
 /// the date the clock was last set (a clock reset by the step that offers the port) the
 /// elapsed term is rate·0/unit, a zero of the rate's sign.
 inline double clock_value_at(const ClockState& clock, TimeValue unit, TimeValue at) {
   if (at == clock.since) return clock.value_at + clock.rate * 0.0;
-  return CodeEvaluator::clock_value(clock, unit, at);
+  return clock_value(clock, unit, at);
 }
 
 /// The first date from `now` at which `clock` (of unit `unit` ns) shows `value` or more:
