@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <string_view>
 #include <thread>
 
 #include "engines/stochastic/random_stream.h"
@@ -14,6 +16,50 @@ namespace {
 
 bool matches(ValueKind param, ValueKind arg) {
   return param == arg || (param == ValueKind::Float && arg == ValueKind::Int);
+}
+
+/// The index of the letter of the printf conversion whose `%` is at `percent` (past its flags,
+/// width, precision and length modifiers); format.size() when the format ends before it.
+std::size_t conversion_letter(const std::string& format, std::size_t percent) {
+  std::size_t end = percent + 1;
+  while (end < format.size() &&
+         std::string_view("-+ #0123456789.hlLqjzt").find(format[end]) != std::string_view::npos) {
+    ++end;
+  }
+  return end;
+}
+
+/// Whether `conversion` prints a value. `%n` would write through the value as a pointer, `%*d`
+/// read a width that was never passed, and what C does not define is worse.
+bool prints_value(char conversion) {
+  return std::string_view("diouxXcsfeEgGaA").find(conversion) != std::string_view::npos;
+}
+
+/// One value printed by a conversion: `spec` is what precedes its letter (`%` and flags, width,
+/// precision; the written length modifiers, if any, are dropped since the value's kind chooses).
+std::string format_value(CallContext& context, std::string spec, char conversion, Val arg,
+                         ValueKind kind) {
+  std::erase_if(
+      spec, [](char c) { return std::string_view("hlLqjzt").find(c) != std::string_view::npos; });
+  char buffer[512];
+  const std::string_view floats = "feEgGaA";
+  if (floats.find(conversion) != std::string_view::npos) {
+    const double value = kind == ValueKind::Float ? arg.f : static_cast<double>(arg.i);
+    std::snprintf(buffer, sizeof buffer, (spec + conversion).c_str(), value);
+  } else if (conversion == 's') {
+    const std::string text = kind == ValueKind::String ? context.strings.text(arg.s)
+                             : kind == ValueKind::Bool ? (arg.b ? "true" : "false")
+                                                       : std::to_string(arg.i);
+    std::snprintf(buffer, sizeof buffer, (spec + 's').c_str(), text.c_str());
+  } else if (conversion == 'c') {
+    std::snprintf(buffer, sizeof buffer, (spec + 'c').c_str(), static_cast<int>(arg.i));
+  } else {
+    const long long value = kind == ValueKind::Float  ? static_cast<long long>(arg.f)
+                            : kind == ValueKind::Bool ? (arg.b ? 1 : 0)
+                                                      : static_cast<long long>(arg.i);
+    std::snprintf(buffer, sizeof buffer, (spec + "ll" + conversion).c_str(), value);
+  }
+  return buffer;
 }
 
 /// printf with BIP values: ints print through `ll` conversions, floats as double, strings as
@@ -28,11 +74,7 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
       out += format[i];
       continue;
     }
-    std::size_t end = i + 1;
-    while (end < format.size() &&
-           std::string_view("-+ #0123456789.hlLqjzt").find(format[end]) != std::string_view::npos) {
-      ++end;
-    }
+    const std::size_t end = conversion_letter(format, i);
     if (end >= format.size()) {
       out += format.substr(i);
       break;
@@ -40,48 +82,14 @@ std::string format_printf(CallContext& context, std::span<const Val> args) {
     const char conversion = format[end];
     if (conversion == '%') {
       out += '%';
-      i = end;
-      continue;
-    }
-    // Only the conversions that print a value: `%n` would write through the value as a
-    // pointer, `%*d` read a width that was never passed, and what C does not define is worse.
-    if (std::string_view("diouxXcsfeEgGaA").find(conversion) == std::string_view::npos) {
+    } else if (!prints_value(conversion) || next >= args.size()) {
       out += format.substr(i, end - i + 1);
-      i = end;
-      continue;
-    }
-    std::string spec = format.substr(i, end - i);
-    // The length modifiers are this function's to choose (`ll`, or none): drop the written ones.
-    std::erase_if(
-        spec, [](char c) { return std::string_view("hlLqjzt").find(c) != std::string_view::npos; });
-    if (next >= args.size()) {
-      out += format.substr(i, end - i + 1);
-      i = end;
-      continue;
-    }
-    const Val arg = args[next];
-    const ValueKind kind =
-        next < context.arg_kinds.size() ? context.arg_kinds[next] : ValueKind::Int;
-    ++next;
-    char buffer[512];
-    const std::string_view floats = "feEgGaA";
-    if (floats.find(conversion) != std::string_view::npos) {
-      const double value = kind == ValueKind::Float ? arg.f : static_cast<double>(arg.i);
-      std::snprintf(buffer, sizeof buffer, (spec + conversion).c_str(), value);
-    } else if (conversion == 's') {
-      const std::string text = kind == ValueKind::String ? context.strings.text(arg.s)
-                               : kind == ValueKind::Bool ? (arg.b ? "true" : "false")
-                                                         : std::to_string(arg.i);
-      std::snprintf(buffer, sizeof buffer, (spec + 's').c_str(), text.c_str());
-    } else if (conversion == 'c') {
-      std::snprintf(buffer, sizeof buffer, (spec + 'c').c_str(), static_cast<int>(arg.i));
     } else {
-      const long long value = kind == ValueKind::Float  ? static_cast<long long>(arg.f)
-                              : kind == ValueKind::Bool ? (arg.b ? 1 : 0)
-                                                        : static_cast<long long>(arg.i);
-      std::snprintf(buffer, sizeof buffer, (spec + "ll" + conversion).c_str(), value);
+      const ValueKind kind =
+          next < context.arg_kinds.size() ? context.arg_kinds[next] : ValueKind::Int;
+      out += format_value(context, format.substr(i, end - i), conversion, args[next], kind);
+      ++next;
     }
-    out += buffer;
     i = end;
   }
   return out;

@@ -18,8 +18,12 @@
 
 namespace smcbip::engines {
 
-/// Registers the options of `smcbip simulate` on a (sub)command.
-inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
+namespace detail {
+
+// The steps of register_simulate_options, in the order `--help` lists the options.
+
+/// Which engine runs, with which seed and run, and for how long.
+inline void add_engine_options(CLI::App& app, SimulateOptions& options) {
   constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
   app.add_option("--engine", options.engine, "the scheduler (default: reference)")
       ->transform(CLI::CheckedTransformer(
@@ -40,6 +44,10 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   app.add_option("-l,--limit", options.limit, "stop after this many steps")
       ->check(cli::integer_in(1, kLargest))
       ->type_name("N");
+}
+
+/// How the engine chooses the next item, and when.
+inline void add_choice_flags(CLI::App& app, SimulateOptions& options) {
   app.add_flag("--real-time", options.real_time, "follow the platform clock");
   app.add_flag("-a,--asap", options.asap, "plan each item at its earliest date");
   app.add_flag("-f,--first-enabled", options.first_enabled,
@@ -48,6 +56,10 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
                "real time: report missed deadlines as warnings and go on");
   app.add_flag("--disable-maximal-progress", options.disable_maximal_progress,
                "do not restrict connectors to their maximal interactions");
+}
+
+/// What the run is: one driven by a prompt or a trace, a silent one, or an exploration.
+inline void add_run_mode_options(CLI::App& app, SimulateOptions& options) {
   CLI::Option* interactive =
       app.add_flag("--interactive", options.interactive, "pick each item at a prompt");
   app.add_option("--replay", options.replay,
@@ -65,6 +77,10 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
                      std::to_string(options.max_explored_states) + "), then stop")
       ->check(cli::integer_in(1, std::uint64_t{1} << 40))
       ->type_name("N");
+}
+
+/// Whether planned dates race, and the mean delay of the items without a deadline.
+inline void add_stochastic_options(CLI::App& app, SimulateOptions& options) {
   app.add_flag_callback(
       "--stochastic", [&options] { options.stochastic = true; },
       "race planned dates (the default when the model has @stochastic ports)");
@@ -77,6 +93,16 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
          "stochastic mode: mean delay (ms) of items with no deadline (default 1)")
       ->check(cli::finite_in(1e-6, 1e9))
       ->type_name("MS");
+}
+
+}  // namespace detail
+
+/// Registers the options of `smcbip simulate` on a (sub)command.
+inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
+  detail::add_engine_options(app, options);
+  detail::add_choice_flags(app, options);
+  detail::add_run_mode_options(app, options);
+  detail::add_stochastic_options(app, options);
   app.add_option("--trace", options.trace, "the trace's format (default: text)")
       ->transform(
           CLI::CheckedTransformer(std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},

@@ -20,6 +20,33 @@ using code_ops::compare;
 
 Val* slot(const Instr& in, const Frame& f) { return code_ops::slot(in.scope, in.index, in.arg, f); }
 
+// The steps of CodeEvaluator::apply over the stack whose top is `sp`; each returns the new top.
+
+/// A Push or Load: `v` goes on top.
+[[gnu::always_inline]] inline Val* push(Val* sp, Val v) {
+  *sp = v;
+  return sp + 1;
+}
+
+/// A unary operator: `v`, computed from the top value, replaces it.
+[[gnu::always_inline]] inline Val* replace_top(Val* sp, Val v) {
+  sp[-1] = v;
+  return sp;
+}
+
+/// Add..BitXor: the two top values give way to their result.
+[[gnu::always_inline]] inline Val* arithmetic_step(const Instr& in, Val* sp) {
+  sp[-2] = arithmetic(in.op, in.kind, sp[-2], sp[-1], in.site);
+  return sp - 1;
+}
+
+/// Eq..Ge: the two top values give way to the comparison's truth.
+[[gnu::always_inline]] inline Val* comparison_step(const Instr& in, Val* sp,
+                                                   const StringPool& strings) {
+  sp[-2] = make_bool(compare(in.op, in.kind, sp[-2], sp[-1], strings));
+  return sp - 1;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Time sets. A clock-dependent value is linear in the delay d (ns) from now: a + b*d.
 
@@ -121,37 +148,30 @@ Val code_ops::call_extern(const bipc::ir::System& system, const BoundFunctions& 
 inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
   switch (in.op) {
     case Op::PushBool:
-      *sp = make_bool(in.imm.b);
-      return sp + 1;
+      return push(sp, make_bool(in.imm.b));
     case Op::PushInt:
-      *sp = make_int(in.imm.i);
-      return sp + 1;
+      return push(sp, make_int(in.imm.i));
     case Op::PushFloat:
-      *sp = make_float(in.imm.f);
-      return sp + 1;
+      return push(sp, make_float(in.imm.f));
     case Op::PushString:
       sp->s = functions_.string_ids[in.index];
       return sp + 1;
     case Op::Load:
-      *sp = code_ops::load(in.scope, in.index, in.arg, frame);
-      return sp + 1;
+      return push(sp, code_ops::load(in.scope, in.index, in.arg, frame));
     case Op::Store:
-      --sp;
-      code_ops::store(in.scope, in.index, in.arg, frame, *sp);
-      return sp;
+      code_ops::store(in.scope, in.index, in.arg, frame, sp[-1]);
+      return sp - 1;
     case Op::StoreRate:
-      --sp;
-      code_ops::store_rate(in.index, frame, *sp);
-      return sp;
+      code_ops::store_rate(in.index, frame, sp[-1]);
+      return sp - 1;
     case Op::Neg:
-      sp[-1] = code_ops::negate(in.kind, sp[-1]);
-      return sp;
+      return replace_top(sp, code_ops::negate(in.kind, sp[-1]));
     case Op::Not:
-      sp[-1] = make_bool(!sp[-1].b);
-      return sp;
+      return replace_top(sp, make_bool(!sp[-1].b));
     case Op::BitNot:
-      sp[-1] = make_int(~sp[-1].i);
-      return sp;
+      return replace_top(sp, make_int(~sp[-1].i));
+    case Op::IntToFloat:
+      return replace_top(sp, make_float(static_cast<double>(sp[-1].i)));
     case Op::Add:
     case Op::Sub:
     case Op::Mul:
@@ -160,28 +180,16 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
     case Op::BitAnd:
     case Op::BitOr:
     case Op::BitXor:
-      --sp;
-      sp[-1] = arithmetic(in.op, in.kind, sp[-1], *sp, in.site);
-      return sp;
+      return arithmetic_step(in, sp);
     case Op::Eq:
     case Op::Ne:
     case Op::Lt:
     case Op::Le:
     case Op::Gt:
     case Op::Ge:
-      --sp;
-      sp[-1] = make_bool(compare(in.op, in.kind, sp[-1], *sp, call_.strings));
-      return sp;
-    case Op::IntToFloat:
-      sp[-1] = make_float(static_cast<double>(sp[-1].i));
-      return sp;
-    case Op::Call: {
-      const Val result =
-          code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp, in.site);
-      sp -= in.arg;
-      if (system_.functions[in.index].result) *sp++ = result;
-      return sp;
-    }
+      return comparison_step(in, sp, call_.strings);
+    case Op::Call:
+      return call(in, sp);
     case Op::Pop:
       return sp - 1;
     case Op::Jump:
@@ -190,6 +198,14 @@ inline Val* CodeEvaluator::apply(const Instr& in, const Frame& frame, Val* sp) {
     case Op::JumpIfTrueKeep:
       break;  // run() and holds_when() follow jumps themselves
   }
+  return sp;
+}
+
+inline Val* CodeEvaluator::call(const Instr& in, Val* sp) {
+  const Val result =
+      code_ops::call_extern(system_, functions_, call_, in.index, in.arg, sp, in.site);
+  sp -= in.arg;
+  if (system_.functions[in.index].result) *sp++ = result;
   return sp;
 }
 

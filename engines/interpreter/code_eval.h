@@ -68,6 +68,8 @@ class CodeEvaluator final : public ModelCode {
   /// One instruction other than a jump over the values below `sp`; returns the new top.
   /// Inlined into run(): a call per instruction cost as much as the instruction.
   [[gnu::always_inline]] inline Val* apply(const bipc::ir::Instr& in, const Frame& frame, Val* sp);
+  /// Call: the arguments below `sp` give way to the extern function's result, if it has one.
+  [[gnu::always_inline]] inline Val* call(const bipc::ir::Instr& in, Val* sp);
   // holds_when's steps over the stack of time sets below `sp`.
   static void join_sides(const detail::PendingJoin& join, detail::TimedItem& top);
   /// Instructions that time sets change; false leaves the instruction to the plain machine.

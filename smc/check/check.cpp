@@ -20,6 +20,21 @@
 namespace smcbip::smc {
 namespace {
 
+/// The points' `done` flags, alone on their cache lines: every worker reads them at every run,
+/// and a neighbour that the consumer writes at every run (an answer's counts) would make each
+/// of those reads a cache miss.
+class DoneFlags {
+ public:
+  explicit DoneFlags(std::size_t points)
+      : storage_(std::make_unique<std::atomic<bool>[]>(points + 2 * kLine)) {}
+  std::atomic<bool>* get() const { return storage_.get() + kLine; }
+
+ private:
+  static_assert(sizeof(std::atomic<bool>) == 1);
+  static constexpr std::size_t kLine = 64;  // bytes of a cache line
+  std::unique_ptr<std::atomic<bool>[]> storage_;
+};
+
 double value_of(const monitors::Value& v, const monitors::Bindings& bindings) {
   return v.is_name() ? bindings.at(v.name) : v.number;
 }
@@ -135,7 +150,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     answers.emplace_back(q, judged, theta, runs, results[p]);
   }
   // Set by the consumer once a point's answer is known; workers then stop judging it.
-  const auto done = std::make_unique<std::atomic<bool>[]>(n);
+  const DoneFlags done_flags(n);
+  std::atomic<bool>* const done = done_flags.get();
   std::size_t open = n;
   std::uint64_t consumed = 0;
   auto reported = start;
@@ -159,8 +175,8 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     options.progress(p);
   };
   if (serving) {
-    options.remote->serve(n, done.get(), [&](std::uint64_t index, RunOutcomes& made) {
-      workers[0]->run(index, done.get(), made);
+    options.remote->serve(n, done, [&](std::uint64_t index, RunOutcomes& made) {
+      workers[0]->run(index, done, made);
     });
     return results;
   }
@@ -196,14 +212,14 @@ std::vector<QueryResult> answer(const bipc::ir::System& system, const QueryPoint
     return open > 0;
   };
   if (options.remote) {
-    const std::string failed = options.remote->consume(n, done.get(), consume);
+    const std::string failed = options.remote->consume(n, done, consume);
     for (std::size_t p = 0; p < n && !failed.empty(); ++p) {
       if (results[p].error.empty() && !done[p].load()) results[p].error = failed;
     }
   } else {
     OrderedSampler<RunOutcomes> sampler(threads,
                                         [&](unsigned w, std::uint64_t index, RunOutcomes& made) {
-                                          workers[w]->run(index, done.get(), made);
+                                          workers[w]->run(index, done, made);
                                         });
     sampler.run(0, consume);
   }

@@ -1,12 +1,14 @@
 // smc::OrderedSampler: outcomes reach the consumer in run-index order whatever thread made them
 // and however long each run took, the consumer stops where it says, and a run's exception is
-// rethrown at its turn.
+// rethrown at its turn; the thread that consumes makes runs too.
 #include "smc/check/ordered_sampler.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdint>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -68,6 +70,28 @@ TEST(OrderedSampler, RethrowsARunsExceptionAtItsTurn) {
                  std::runtime_error);
     EXPECT_EQ(consumed, 40u) << threads;
   }
+}
+
+TEST(OrderedSampler, TheCallingThreadIsWorkerZero) {
+  // No thread of its own for the consumer: with 2 threads, the caller and one helper make runs.
+  const std::thread::id caller = std::this_thread::get_id();
+  std::mutex mutex;
+  std::set<std::thread::id> makers;
+  bool zero_elsewhere = false;
+  OrderedSampler<std::uint64_t> sampler(2, [&](unsigned w, std::uint64_t i, std::uint64_t& out) {
+    const std::lock_guard lock(mutex);
+    makers.insert(std::this_thread::get_id());
+    zero_elsewhere = zero_elsewhere || (w == 0) != (std::this_thread::get_id() == caller);
+    out = i;
+  });
+  std::uint64_t expected = 0;
+  sampler.run(0, [&](const std::uint64_t& outcome) {
+    EXPECT_EQ(outcome, expected++);
+    return expected < 2000;
+  });
+  EXPECT_FALSE(zero_elsewhere);
+  EXPECT_LE(makers.size(), 2u);
+  EXPECT_TRUE(makers.contains(caller));
 }
 
 }  // namespace
