@@ -38,7 +38,7 @@ void Runtime::stochastic_params(Index atom, Index port, std::vector<double>& out
       out.push_back(*number);
       continue;
     }
-    if (!f) f = atom_frame(atom);
+    if (!f) f = atoms_.frame(atom);
     out.push_back(eval_.evaluate(code, *f).f);
   }
 }

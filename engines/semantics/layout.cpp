@@ -266,10 +266,9 @@ std::optional<ValueDispatch> value_dispatch(const Layout& layout,
   return out;
 }
 
-}  // namespace
-
-std::string build_layout(const System& system, Layout& layout) {
-  layout = Layout{};
+/// Per atom type: its transitions' entries (labelled, internal, by `from` place when its net is a
+/// state machine) and the leading comparisons of their guards.
+void add_transition_tables(const System& system, Layout& layout) {
   for (const bipc::ir::AtomType& type : system.atom_types) {
     auto& labelled = layout.labelled_transitions.emplace_back();
     auto& internal = layout.internal_transitions.emplace_back();
@@ -293,6 +292,10 @@ std::string build_layout(const System& system, Layout& layout) {
       dispatch.push_back(value_dispatch(layout, entries));
     }
   }
+}
+
+/// Per atom: its slots in a run state, its parameters and its name; and the initial order.
+void add_atoms(const System& system, Layout& layout) {
   for (const bipc::ir::AtomInstance& atom : system.atoms) {
     const bipc::ir::AtomType& type = system.atom_types[atom.type];
     layout.atom_data.push_back(layout.data_size);
@@ -312,38 +315,86 @@ std::string build_layout(const System& system, Layout& layout) {
   for (Index a = 0; a < system.atoms.size(); ++a) layout.initial_order[a] = a;
   std::sort(layout.initial_order.begin(), layout.initial_order.end(),
             [&](Index x, Index y) { return layout.atom_names[x] < layout.atom_names[y]; });
+}
+
+/// Connector `k`'s data slots, defined interactions and place in its compound; an error message
+/// when the engines cannot run it.
+std::string add_connector(const System& system, Index k, Layout& layout) {
+  const bipc::ir::ConnectorInstance& connector = system.connectors[k];
+  const bipc::ir::ConnectorType& type = system.connector_types[connector.type];
+  const bool maximal_only = computes_maximal_only(system, k);
+  layout.maximal_only.push_back(maximal_only ? 1 : 0);
+  const bool wide = type.ports.size() > kPortSetBits;
+  if (wide && !maximal_only) {
+    return "connector '" + connector.path + "' has more than " + std::to_string(kPortSetBits) +
+           " ports and a guard, an `up` calling a function, an export, a sub-connector or a "
+           "priority naming it; the engines support such wide connectors only without these";
+  }
+  layout.connector_data.push_back(layout.data_size);
+  layout.data_size += type.data.size();
+  const std::optional<std::vector<PortSet>> sets =
+      wide ? std::nullopt : defined_interactions(type.define);
+  if (!sets && !maximal_only) {
+    return "connector '" + connector.path + "' defines more than " +
+           std::to_string(kMaxDefinedInteractions) +
+           " interactions and a guard, an `up` calling a function, an export, a sub-connector "
+           "or a priority naming it; the engines enumerate the interactions of such connectors "
+           "and do not support that many";
+  }
+  layout.enumerated.push_back(sets ? 1 : 0);
+  layout.defined.push_back(sets ? with_code(type, *sets) : std::vector<DefinedInteraction>{});
+  layout.required_ports.push_back(required_ports(layout.defined.back()));
+  // Top level: not bound by another connector of its own compound.
+  bool top = true;
+  for (Index by : connector.bound_by_all) {
+    if (system.connectors[by].parent == connector.parent) top = false;
+  }
+  layout.top_level.push_back(top);
+  layout.connector_names.push_back(system.root_name + "." + connector.path);
+  return {};
+}
+
+/// Compound `c`'s priority rules as port sets, and per connector those whose low side may name
+/// it; an error message when a rule names a port its connector does not bind.
+std::string add_priority_rules(const System& system, Index c, Layout& layout) {
+  const auto& priorities = system.compounds[c].priorities;
+  for (Index r = 0; r < priorities.size(); ++r) {
+    PriorityRule rule;
+    rule.compound = c;
+    rule.rule = r;
+    rule.low_connector = priorities[r].low.connector;
+    rule.high_connector = priorities[r].high.connector;
+    if (!side_ports(system, priorities[r].low, rule.low) ||
+        !side_ports(system, priorities[r].high, rule.high)) {
+      return "priority '" + priorities[r].name + "' names a port its connector does not bind";
+    }
+    if (rule.low_connector != bipc::ir::kNone && priorities[r].low.all_ports) {
+      const auto n = system.connectors[rule.low_connector].bound.size();
+      rule.low = n >= 64 ? ~PortSet{0} : (PortSet{1} << n) - 1;
+    }
+    layout.rules[c].push_back(rule);
+  }
+  if (!layout.rules[c].empty()) layout.ruled_compounds.push_back(c);
+  // Rules whose low side may name each connector: its own, and `*` ones of its compound.
+  for (Index r = 0; r < layout.rules[c].size(); ++r) {
+    const Index low = layout.rules[c][r].low_connector;
+    if (low != bipc::ir::kNone) {
+      layout.rules_by_low[low].push_back(r);
+      continue;
+    }
+    for (Index k : system.compounds[c].connectors) layout.rules_by_low[k].push_back(r);
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string build_layout(const System& system, Layout& layout) {
+  layout = Layout{};
+  add_transition_tables(system, layout);
+  add_atoms(system, layout);
   for (Index k = 0; k < system.connectors.size(); ++k) {
-    const bipc::ir::ConnectorInstance& connector = system.connectors[k];
-    const bipc::ir::ConnectorType& type = system.connector_types[connector.type];
-    const bool maximal_only = computes_maximal_only(system, k);
-    layout.maximal_only.push_back(maximal_only ? 1 : 0);
-    const bool wide = type.ports.size() > kPortSetBits;
-    if (wide && !maximal_only) {
-      return "connector '" + connector.path + "' has more than " + std::to_string(kPortSetBits) +
-             " ports and a guard, an `up` calling a function, an export, a sub-connector or a "
-             "priority naming it; the engines support such wide connectors only without these";
-    }
-    layout.connector_data.push_back(layout.data_size);
-    layout.data_size += type.data.size();
-    const std::optional<std::vector<PortSet>> sets =
-        wide ? std::nullopt : defined_interactions(type.define);
-    if (!sets && !maximal_only) {
-      return "connector '" + connector.path + "' defines more than " +
-             std::to_string(kMaxDefinedInteractions) +
-             " interactions and a guard, an `up` calling a function, an export, a sub-connector "
-             "or a priority naming it; the engines enumerate the interactions of such connectors "
-             "and do not support that many";
-    }
-    layout.enumerated.push_back(sets ? 1 : 0);
-    layout.defined.push_back(sets ? with_code(type, *sets) : std::vector<DefinedInteraction>{});
-    layout.required_ports.push_back(required_ports(layout.defined.back()));
-    // Top level: not bound by another connector of its own compound.
-    bool top = true;
-    for (Index by : connector.bound_by_all) {
-      if (system.connectors[by].parent == connector.parent) top = false;
-    }
-    layout.top_level.push_back(top);
-    layout.connector_names.push_back(system.root_name + "." + connector.path);
+    if (std::string error = add_connector(system, k, layout); !error.empty()) return error;
   }
   add_listing(system, 0, layout);
   add_atom_ports(system, 0, false, layout.internal_ports);
@@ -352,33 +403,7 @@ std::string build_layout(const System& system, Layout& layout) {
   layout.rules.resize(system.compounds.size());
   layout.rules_by_low.resize(system.connectors.size());
   for (Index c = 0; c < system.compounds.size(); ++c) {
-    const auto& priorities = system.compounds[c].priorities;
-    for (Index r = 0; r < priorities.size(); ++r) {
-      PriorityRule rule;
-      rule.compound = c;
-      rule.rule = r;
-      rule.low_connector = priorities[r].low.connector;
-      rule.high_connector = priorities[r].high.connector;
-      if (!side_ports(system, priorities[r].low, rule.low) ||
-          !side_ports(system, priorities[r].high, rule.high)) {
-        return "priority '" + priorities[r].name + "' names a port its connector does not bind";
-      }
-      if (rule.low_connector != bipc::ir::kNone && priorities[r].low.all_ports) {
-        const auto n = system.connectors[rule.low_connector].bound.size();
-        rule.low = n >= 64 ? ~PortSet{0} : (PortSet{1} << n) - 1;
-      }
-      layout.rules[c].push_back(rule);
-    }
-    if (!layout.rules[c].empty()) layout.ruled_compounds.push_back(c);
-    // Rules whose low side may name each connector: its own, and `*` ones of its compound.
-    for (Index r = 0; r < layout.rules[c].size(); ++r) {
-      const Index low = layout.rules[c][r].low_connector;
-      if (low != bipc::ir::kNone) {
-        layout.rules_by_low[low].push_back(r);
-        continue;
-      }
-      for (Index k : system.compounds[c].connectors) layout.rules_by_low[k].push_back(r);
-    }
+    if (std::string error = add_priority_rules(system, c, layout); !error.empty()) return error;
   }
   return {};
 }

@@ -1,5 +1,5 @@
-// What the multithread scheduler adds to a Runtime: which atom types may fire in parallel, the
-// thread pool, and one evaluator per thread.
+// What the multithread scheduler adds to the execution of interactions: which atom types may
+// fire in parallel, the thread pool, and one evaluator per thread.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +13,8 @@
 #include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
 #include "engines/parallel/fork_join_pool.h"
-#include "engines/semantics/runtime.h"
+#include "engines/semantics/atom_priorities.h"
+#include "engines/semantics/runtime_types.h"
 
 namespace smcbip::engines {
 
@@ -43,7 +44,7 @@ struct alignas(64) ThreadEvaluator {
   AtomPriorities priorities;
 };
 
-/// The state of the multithread scheduler inside a Runtime.
+/// The state of the multithread scheduler inside an InteractionExecution.
 struct ParallelFiring {
   ParallelFiring(const Model& model, const BoundFunctions& functions, const CallContext& main,
                  unsigned threads);

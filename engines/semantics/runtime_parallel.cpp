@@ -7,8 +7,8 @@
 #include <string>
 
 #include "engines/api/simulate.h"
+#include "engines/semantics/interaction_execution.h"
 #include "engines/semantics/parallel_firing.h"
-#include "engines/semantics/runtime.h"
 
 namespace smcbip::engines {
 
@@ -77,12 +77,10 @@ ParallelFiring::ParallelFiring(const Model& model, const BoundFunctions& functio
   seen.assign(model.system().atoms.size(), 0);
 }
 
-Runtime::~Runtime() = default;
-
-bool Runtime::fires_in_parallel(Index index) {
+bool InteractionExecution::fires_in_parallel(Index index) {
   ParallelFiring& p = *parallel_;
   p.ports.clear();
-  append_value_ports(index, p.ports);
+  append_atom_ports(index, p.ports);
   // Parallel firing must pay off and must not be observable: two atoms at least with enough
   // work between them, each of a parallel-safe type, none listed twice (its second firing
   // would see the first).
@@ -96,10 +94,10 @@ bool Runtime::fires_in_parallel(Index index) {
     p.seen[atom] = p.execution;
     work += p.cost[type];
   }
-  return parallel && work >= options_.parallel_min_work;
+  return parallel && work >= parallel_min_work_;
 }
 
-std::size_t Runtime::run_downs(Index index, std::optional<CodeFault>& fault) {
+std::size_t InteractionExecution::run_downs(Index index, std::optional<CodeFault>& fault) {
   // A down only writes its own connector's data and the port data of atoms below it, which the
   // atoms fired before it in the reference order never read, so running the downs early changes
   // no value. A down that faults stops the reference engine after the atoms before it: only
@@ -124,7 +122,7 @@ std::size_t Runtime::run_downs(Index index, std::optional<CodeFault>& fault) {
   return parallel_->ports.size();
 }
 
-bool Runtime::fire_ports_in_parallel(std::size_t count) {
+bool InteractionExecution::fire_ports_in_parallel(std::size_t count) {
   ParallelFiring& p = *parallel_;
   p.fired.assign(count, 0);
   p.errors.resize(count);
@@ -136,9 +134,9 @@ bool Runtime::fire_ports_in_parallel(std::size_t count) {
                                      system_.atom_types[system_.atoms[atom].type].data.size()));
     AtomScratch s{*t.eval, p.errors[i], t.data.data(), /*on_worker=*/true, &t.priorities};
     try {
-      p.fired[i] = fire_port(s, atom, port) ? 1 : 0;
+      p.fired[i] = atoms_.fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
-      s.error = fault_error(f);
+      s.error = fault_error(system_, f);
     } catch (...) {
       // A user extern declared pure threw: no error channel on a worker thread.
       std::terminate();
@@ -148,7 +146,7 @@ bool Runtime::fire_ports_in_parallel(std::size_t count) {
   };
   p.pool.run(count, fire);
   // The scheduler's bookkeeping is shared: the fired atoms are noted once the threads joined.
-  for (std::size_t i = 0; i < count; ++i) note_atom_changed(p.ports[i].first);
+  for (std::size_t i = 0; i < count; ++i) atoms_.note_changed(p.ports[i].first);
   for (std::size_t i = 0; i < count; ++i) {
     if (!p.fired[i]) {
       error_ = std::move(p.errors[i]);
@@ -158,13 +156,16 @@ bool Runtime::fire_ports_in_parallel(std::size_t count) {
   return true;
 }
 
-bool Runtime::execute_value_in_parallel(Index index) {
-  if (!fires_in_parallel(index)) return execute_value(index);
+bool InteractionExecution::execute_in_parallel(Index index) {
+  if (!fires_in_parallel(index)) return execute_in_sequence(index);
   // The downs first, in the reference order; then the atoms before the first faulty down.
   std::optional<CodeFault> fault;
   const std::size_t count = run_downs(index, fault);
   if (!fire_ports_in_parallel(count)) return false;
-  if (fault) return fail(*fault);
+  if (fault) {
+    error_ = fault_error(system_, *fault);
+    return false;
+  }
   return true;
 }
 

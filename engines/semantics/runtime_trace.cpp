@@ -75,15 +75,16 @@ std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
   }
   for (const auto& [atom, port] : layout_.internal_ports) {
     if (state_.resume_pending[atom]) continue;
-    const auto& v = port_values_[port_offset_[atom] + port];
+    const auto& v = atoms_.port_values()[atoms_.port_offset()[atom] + port];
     if (!v || !late(v->constraint)) continue;
     const AtomType& type = system_.atom_types[system_.atoms[atom].type];
     lines.push_back(layout_.atom_names[atom] + "." + type.ports[port].name + " " +
                     constraint_text(v->constraint));
   }
   for (Index a = 0; a < system_.atoms.size(); ++a) {
-    if (!state_.resume_pending[a] && !atom_invariant_[a].contains(t)) {
-      lines.push_back(layout_.atom_names[a] + " invariant " + format_interval(atom_invariant_[a]));
+    const Interval& invariant = atoms_.time_bounds().invariant(a);
+    if (!state_.resume_pending[a] && !invariant.contains(t)) {
+      lines.push_back(layout_.atom_names[a] + " invariant " + format_interval(invariant));
     }
   }
   for (Index a = 0; a < system_.atoms.size(); ++a) {

@@ -80,6 +80,11 @@ struct ModelError {
   std::string where;
 };
 
+/// `file:line:column` of a source location of the system; empty when unknown.
+std::string source_position(const bipc::ir::System& system, const bipc::Location& at);
+/// The error of a fault of the model's code, at the source location of its instruction.
+ModelError fault_error(const bipc::ir::System& system, const CodeFault& fault);
+
 /// A state the engines cannot compute (thrown inside compute_items, reported as an input error).
 struct UnsupportedRun {
   std::string message;

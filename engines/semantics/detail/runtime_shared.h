@@ -72,18 +72,6 @@ inline const PortValue& chosen(const InteractionValue& v, Index port) {
                            [](const PortValue& pv, Index p) { return pv.param < p; });
 }
 
-}  // namespace detail
-
-/// Where atom code finds other atoms' data (Frame callback).
-struct RuntimeDetail {
-  static Val* instance_slot(const void* context, Index atom, std::uint16_t slot) {
-    Runtime& r = *const_cast<Runtime*>(static_cast<const Runtime*>(context));
-    return &r.state_.data[r.layout_.atom_data[atom] + slot];
-  }
-};
-
-namespace detail {
-
 /// The frame of connector code (guard, up, down) over one interaction value.
 inline Frame connector_frame(InteractionValue& value, const PortContext& context, TimeValue now) {
   Frame f;
