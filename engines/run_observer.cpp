@@ -6,18 +6,15 @@
 
 namespace smcbip::engines {
 
-StateView::StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
-                     const StringPool& strings)
-    : system_(system),
-      layout_(layout),
-      state_(state),
-      strings_(strings),
-      data_(&state.data),
-      marking_(&state.marking),
-      atom_data_(layout.atom_data.data()),
-      atom_places_(layout.atom_places.data()) {}
-
 TimeValue StateView::now() const { return state_.now; }
+
+bool StateView::marked(bipc::ir::Index atom, bipc::ir::Index place) const {
+  return state_.marking[layout_.atom_places[atom] + place] != 0;
+}
+
+Val StateView::data(bipc::ir::Index atom, bipc::ir::Index slot) const {
+  return state_.data[layout_.atom_data[atom] + slot];
+}
 
 double StateView::clock(bipc::ir::Index atom, bipc::ir::Index clock) const {
   const std::size_t slot = layout_.atom_clocks[atom] + clock;

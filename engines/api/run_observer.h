@@ -2,11 +2,9 @@
 // after each step, which item fired, and when. An observer may stop the run.
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "bipc/ir/ir.h"
 #include "engines/api/time_value.h"
@@ -22,18 +20,15 @@ class StringPool;
 class StateView {
  public:
   StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
-            const StringPool& strings);
+            const StringPool& strings)
+      : system_(system), layout_(layout), state_(state), strings_(strings) {}
 
   const bipc::ir::System& system() const { return system_; }
   TimeValue now() const;
   /// Whether place `place` of atom `atom` (indices into the IR) is marked.
-  bool marked(bipc::ir::Index atom, bipc::ir::Index place) const {
-    return (*marking_)[atom_places_[atom] + place] != 0;
-  }
+  bool marked(bipc::ir::Index atom, bipc::ir::Index place) const;
   /// Data variable `slot` of atom `atom` (kind: the IR's declared type).
-  Val data(bipc::ir::Index atom, bipc::ir::Index slot) const {
-    return (*data_)[atom_data_[atom] + slot];
-  }
+  Val data(bipc::ir::Index atom, bipc::ir::Index slot) const;
   /// Clock `clock` of atom `atom` now, in the clock's unit.
   double clock(bipc::ir::Index atom, bipc::ir::Index clock) const;
   /// The rate of that clock now (1 unless the model set another).
@@ -50,13 +45,6 @@ class StateView {
   const Layout& layout_;
   const RunState& state_;
   const StringPool& strings_;
-  // The state's data and places and the atoms' offsets into them, read inline: a monitor reads
-  // them after every step of every run. The vectors are the state's own (not their buffers),
-  // so that a state assigned afresh is still seen.
-  const std::vector<Val>* data_;
-  const std::vector<std::uint8_t>* marking_;
-  const std::size_t* atom_data_;
-  const std::size_t* atom_places_;
 };
 
 /// The step that led to a state: the initial state is step 0 and fired nothing.

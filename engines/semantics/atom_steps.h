@@ -6,7 +6,6 @@
 // engines' innermost loop, run for every atom a step touches.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -33,26 +32,44 @@ namespace smcbip::engines {
 }
 
 /// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
-/// Branch-free on the operator: the order of the operands (less, equal, greater) selects a bit
-/// of the operator's truth table, since a switch per comparison mispredicted on guards that mix
-/// operators. Operators outside Eq..Ge are not made by leading_comparison; they read as Ge.
 [[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
                                                  const Val* atom_data, const Val* atom_params) {
-  // Per operator from Eq to Ge: bit 0 holds when a < b, bit 1 when a == b, bit 2 when a > b.
-  constexpr std::uint8_t kHoldsWhen[] = {0b010, 0b101, 0b001, 0b011, 0b100, 0b110};
-  constexpr unsigned kGe = 5;
-  const auto read = [&](const bipc::ir::IntOperand& o) -> std::int64_t {
-    if (o.kind == bipc::ir::IntOperand::Kind::Literal) return o.literal;
-    return (o.kind == bipc::ir::IntOperand::Kind::AtomData ? atom_data : atom_params)[o.index].i;
+  const auto read = [&](const bipc::ir::IntOperand& o) {
+    switch (o.kind) {
+      case bipc::ir::IntOperand::Kind::AtomData:
+        return atom_data[o.index].i;
+      case bipc::ir::IntOperand::Kind::AtomParam:
+        return atom_params[o.index].i;
+      case bipc::ir::IntOperand::Kind::Literal:
+        break;
+    }
+    return o.literal;
   };
   for (std::size_t k = 0; k < c.count; ++k) {
     const bipc::ir::IntComparison& test = c.tests[k];
     const std::int64_t a = read(test.left), b = read(test.right);
-    const unsigned order = static_cast<unsigned>(a > b) + static_cast<unsigned>(a >= b);
-    const unsigned row = std::min(static_cast<unsigned>(test.op) -
-                                      static_cast<unsigned>(bipc::ir::Op::Eq),
-                                  kGe);
-    if (((kHoldsWhen[row] >> order) & 1u) == 0) return false;
+    bool holds = false;
+    switch (test.op) {
+      case bipc::ir::Op::Eq:
+        holds = a == b;
+        break;
+      case bipc::ir::Op::Ne:
+        holds = a != b;
+        break;
+      case bipc::ir::Op::Lt:
+        holds = a < b;
+        break;
+      case bipc::ir::Op::Le:
+        holds = a <= b;
+        break;
+      case bipc::ir::Op::Gt:
+        holds = a > b;
+        break;
+      default:
+        holds = a >= b;
+        break;
+    }
+    if (!holds) return false;
   }
   return true;
 }

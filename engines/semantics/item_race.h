@@ -108,23 +108,19 @@ std::pair<std::size_t, TimeValue> random_race(std::size_t n, WindowOf window, Ti
 template <class WindowOf, class DateOf>
 [[gnu::always_inline]] inline std::optional<std::pair<std::size_t, TimeValue>> earliest_in_window(
     std::size_t n, WindowOf window, DateOf date, RandomStream& random) {
-  // The earliest so far is selected without a branch: which of random dates is earlier is
-  // what a predictor cannot guess. Ties (equal nanoseconds) are rare and keep their branch.
-  std::size_t best = n;
-  TimeValue best_date = 0;
+  std::optional<std::pair<std::size_t, TimeValue>> best;
   std::uint64_t ties = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const TimeValue d = date(i);
     if (!window(i).contains(d)) continue;
-    const bool earlier = best == n || d < best_date;
-    const bool tie = !earlier && d == best_date;
-    best = earlier ? i : best;
-    best_date = earlier ? d : best_date;
-    ties = earlier ? 1 : ties;
-    if (tie && random.below(++ties) == 0) best = i;
+    if (!best || d < best->second) {
+      best = std::pair{i, d};
+      ties = 1;
+    } else if (d == best->second && random.below(++ties) == 0) {
+      best->first = i;
+    }
   }
-  if (best == n) return std::nullopt;
-  return std::pair{best, best_date};
+  return best;
 }
 
 }  // namespace smcbip::engines
