@@ -1,5 +1,5 @@
 // The atoms of one run: where each one's slots are, its ports' offers, its internal transitions,
-// the firing of its transitions and its invariants (the reference engine's atom side).
+// the firing of its transitions and its invariants: the atom side that every interpreted engine shares.
 #pragma once
 
 #include <cstddef>

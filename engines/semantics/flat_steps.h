@@ -10,7 +10,8 @@
 // on a timed one (or in stochastic mode) each has its constraint, the waiting window cuts them as
 // Runtime::wait_interval does, and the reference race (random_race) or the stochastic race of
 // planned dates (earliest_in_window, dates kept per position as DatePlanner keeps them per
-// item) chooses. The firing is that of Runtime::execute_value and fire_port.
+// item) chooses. The firing is that of InteractionExecution::execute_in_sequence
+// and AtomFiring::fire_port.
 // Whatever the Runtime would report as an error (1-safety, non-determinism, code faults) ends
 // the path as Beyond: the engines then replay the run, which tells the error as they do.
 #pragma once
@@ -339,7 +340,7 @@ class FlatSteps final : public CompiledSteps {
     return update_atom(atom, f, marking);
   }
 
-  /// Runtime::execute_value for a rendezvous: `down` over the value, its data written back, then
+  /// InteractionExecution::execute_in_sequence for a rendezvous: `down` over the value, its data written back, then
   /// the ports in parameter order.
   bool fire_connector(const FlatTables::Connector& c) {
     if (c.has_down) {
