@@ -9,13 +9,12 @@ list(APPEND ENGINES_TEST_SOURCES
   conformance_priorities_test.cpp
   conformance_multithread_suite_test.cpp
   conformance_hand_derived_test.cpp
-  conformance_externs.cpp
-  trace_oracles.cpp
   trace_oracles_test.cpp)
-set(ENGINES_REALTIME_TEST_SOURCES
-  conformance_realtime_test.cpp
-  conformance_externs.cpp
-  trace_oracles.cpp)
+set(ENGINES_REALTIME_TEST_SOURCES conformance_realtime_test.cpp)
+# The trace oracles and the conformance suite's externs, compiled once for the three test
+# executables that use them.
+add_library(engines_test_support STATIC trace_oracles.cpp conformance_externs.cpp)
+target_link_libraries(engines_test_support PUBLIC engines GTest::gtest PRIVATE smcbip_warnings)
 list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp builtins_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES explore_test.cpp interactive_test.cpp replay_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES limits_test.cpp maximal_interaction_test.cpp
