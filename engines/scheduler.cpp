@@ -5,25 +5,13 @@
 #include <algorithm>
 #include <cstring>
 #include <random>
-#include <thread>
 
+#include "engines/engine.h"
 #include "engines/semantics/interpreted_steps.h"
 
 namespace smcbip::engines {
 
 namespace {
-
-RuntimeOptions runtime_options(const SimulateOptions& options) {
-  RuntimeOptions r;
-  r.maximal_progress = !options.disable_maximal_progress;
-  r.incremental = options.engine != EngineKind::Reference;
-  if (options.engine == EngineKind::Multithread) {
-    r.threads =
-        options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    r.parallel_min_work = options.parallel_min_work;
-  }
-  return r;
-}
 
 /// Whether code of the system reads a clock or calls an extern function, except the
 /// parameters of @stochastic ports (they only draw dates): then the places and data alone no
@@ -62,7 +50,7 @@ RunParts::RunParts(Simulator::Shared& shared, std::ostream& model_output)
     : output(&model_output),
       random(shared.seed, 0),
       runtime(shared.model, shared.layout, shared.functions, shared.strings, model_output, random,
-              runtime_options(shared.options)),
+              engine_of(shared.options.engine).runtime_options(shared.options)),
       planner(shared.system, shared.custom, random, shared.options.unbounded_mean) {}
 
 namespace {

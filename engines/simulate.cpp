@@ -8,6 +8,7 @@
 
 #include "engines/detail/replay_follower.h"
 #include "engines/detail/scheduler.h"
+#include "engines/engine.h"
 #include "engines/explore.h"
 #include "engines/interactive.h"
 #include "engines/trace/jsonl_trace.h"
@@ -139,11 +140,11 @@ class Simulation {
     }
   }
 
-  /// The model's compiled step path, when it has one and this run can take it: the optimised
-  /// engine in simulated time without a text trace or a prompt.
+  /// The model's compiled step path, when it has one and this run can take it: an engine that
+  /// takes it (the optimised one), in simulated time, without a text trace or a prompt.
   CompiledSteps* compiled_steps() {
-    if (options_.engine != EngineKind::Optimised || options_.real_time || options_.interactive ||
-        picked_ || verbose_ || options_.disable_maximal_progress) {
+    if (!engine_of(options_.engine).takes_compiled_steps() || options_.real_time ||
+        options_.interactive || picked_ || verbose_ || options_.disable_maximal_progress) {
       return nullptr;
     }
     return scheduler_.compiled_steps();

@@ -1,11 +1,11 @@
 // The execution of an interaction value in sequence: downs and atom firings depth first, as the
-// reference engine runs them. The parallel path: runtime_parallel.cpp.
+// reference engine runs them. The multithread engine's parallel path:
+// engines/multithread/pool_firing.cpp.
 #include "engines/semantics/interaction_execution.h"
 
 #include <algorithm>
 
 #include "engines/semantics/detail/runtime_shared.h"
-#include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
 
@@ -13,13 +13,11 @@ using detail::connector_frame;
 using detail::PortContext;
 
 InteractionExecution::InteractionExecution(const bipc::ir::System& system, const Layout& layout,
-                                           const RuntimeOptions& options, ModelCode& eval,
-                                           RunState& state, ModelError& error,
+                                           ModelCode& eval, RunState& state, ModelError& error,
                                            ConnectorValues& connectors, AtomFiring& atoms,
                                            std::unique_ptr<ParallelFiring> parallel)
     : system_(system),
       layout_(layout),
-      parallel_min_work_(options.parallel_min_work),
       eval_(eval),
       state_(state),
       error_(error),

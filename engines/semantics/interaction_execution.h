@@ -1,6 +1,6 @@
 // The execution of an interaction value: the connectors' `down`s and the firing of the atom
-// ports it chose, in the reference engine's order, in sequence or (multithread scheduler) with
-// the atoms fired on a thread pool when that is observably the same.
+// ports it chose, in the reference engine's order, in sequence or through an engine's parallel
+// firing (parallel_firing.h) when that is observably the same.
 #pragma once
 
 #include <cstddef>
@@ -15,21 +15,19 @@
 #include "engines/semantics/atom_firing.h"
 #include "engines/semantics/connector_values.h"
 #include "engines/semantics/layout.h"
+#include "engines/semantics/parallel_firing.h"
 #include "engines/semantics/runtime_types.h"
 
 namespace smcbip::engines {
-
-struct ParallelFiring;
 
 /// Executes the interaction values of a run's connectors over its state, its connectors' values
 /// and its atoms (which the owner keeps), recording failures in `error`.
 class InteractionExecution {
  public:
-  /// `parallel`: the thread pool and its evaluators (multithread scheduler), or null.
-  InteractionExecution(const bipc::ir::System& system, const Layout& layout,
-                       const RuntimeOptions& options, ModelCode& eval, RunState& state,
-                       ModelError& error, ConnectorValues& connectors, AtomFiring& atoms,
-                       std::unique_ptr<ParallelFiring> parallel);
+  /// `parallel`: the engine's parallel firing, or null to fire atoms in sequence.
+  InteractionExecution(const bipc::ir::System& system, const Layout& layout, ModelCode& eval,
+                       RunState& state, ModelError& error, ConnectorValues& connectors,
+                       AtomFiring& atoms, std::unique_ptr<ParallelFiring> parallel);
   ~InteractionExecution();
   InteractionExecution(const InteractionExecution&) = delete;
   InteractionExecution& operator=(const InteractionExecution&) = delete;
@@ -37,30 +35,30 @@ class InteractionExecution {
   /// Executes interaction value `value` (an index into ConnectorValues::values()); false with
   /// the error set on failure. A fault of the model's code on this thread is thrown.
   bool execute(Index value) {
-    return parallel_ ? execute_in_parallel(value) : execute_in_sequence(value);
+    if (parallel_) {
+      if (const std::optional<bool> done = parallel_->execute(*this, value)) return *done;
+    }
+    return execute_in_sequence(value);
   }
   /// Appends the atom ports (atom, port) the value fires to `out`, in execution order.
   void append_atom_ports(Index value, std::vector<std::pair<Index, Index>>& out) const;
 
- private:
+  // What a parallel firing works on.
   /// The connector's `down` of an interaction value, and its data written back to the state.
+  /// A fault of the model's code is thrown.
   void run_down(Index value);
+  const bipc::ir::System& system() const { return system_; }
+  const Layout& layout() const { return layout_; }
+  RunState& state() { return state_; }
+  ModelError& error() { return error_; }
+  AtomFiring& atoms() { return atoms_; }
+  const std::vector<InteractionValue>& values() const { return connectors_.values(); }
+
+ private:
   bool execute_in_sequence(Index value);
-  /// execute_in_sequence, with the atoms fired on the thread pool when that is observably the
-  /// same (runtime_parallel.cpp).
-  bool execute_in_parallel(Index value);
-  /// Whether the atoms of the value fire on the thread pool (parallel_->ports: its atom ports).
-  bool fires_in_parallel(Index value);
-  /// The connectors' downs of the value, in the reference order: the number of its atom ports
-  /// before the first down that faults (then in `fault`), else all of them.
-  std::size_t run_downs(Index value, std::optional<CodeFault>& fault);
-  /// Fires the first `count` atom ports of parallel_->ports on the pool; false with the error
-  /// set.
-  bool fire_ports_in_parallel(std::size_t count);
 
   const bipc::ir::System& system_;
   const Layout& layout_;
-  std::size_t parallel_min_work_;  // RuntimeOptions::parallel_min_work
   ModelCode& eval_;
   RunState& state_;
   ModelError& error_;

@@ -9,7 +9,6 @@
 
 #include "engines/api/simulate.h"
 #include "engines/semantics/detail/runtime_shared.h"
-#include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
 
@@ -38,10 +37,9 @@ Runtime::Runtime(const Model& model, const Layout& layout, const BoundFunctions&
                atoms_.port_values(), atoms_.port_offset(), extern_ports_, options.incremental),
       priorities_(system_, layout, options.maximal_progress, eval_, state_, error_, connectors_,
                   cache_, time_bound_),
-      execution_(system_, layout, options, eval_, state_, error_, connectors_, atoms_,
-                 options.threads > 1
-                     ? std::make_unique<ParallelFiring>(model, functions, call_, options.threads)
-                     : nullptr) {
+      execution_(system_, layout, eval_, state_, error_, connectors_, atoms_,
+                 options.parallel_firing ? options.parallel_firing(model, functions, call_, options)
+                                         : nullptr) {
   connectors_.index();
 }
 

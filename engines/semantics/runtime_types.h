@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,15 +60,29 @@ struct Item {
   Constraint offered;        // before that cut: unchanged while the item's atoms do not move
 };
 
-/// How the semantics is computed: the schedulers share it and differ only here.
+class ParallelFiring;
+struct RuntimeOptions;
+/// Makes the parallel firing of one run: its own evaluators run the model's code as `main`'s
+/// does (the multithread engine's make_pool_firing).
+using ParallelFiringMaker = std::unique_ptr<ParallelFiring> (*)(const Model& model,
+                                                                const BoundFunctions& functions,
+                                                                const CallContext& main,
+                                                                const RuntimeOptions& options);
+
+/// How the semantics is computed: the engines share it and differ only here (engines/engine.h
+/// says how each sets it).
 struct RuntimeOptions {
   bool maximal_progress = true;
-  /// Optimised scheduler: keep each connector's interactions between steps and recompute only
-  /// those of connectors whose atoms (or sub-connectors) an execution touched.
+  /// The incremental cache (optimised and multithread engines): each connector's interactions
+  /// are kept between steps, and only those of connectors whose atoms (or sub-connectors) an
+  /// execution touched are computed again.
   bool incremental = false;
-  /// Multithread scheduler: the atoms of one interaction execute on this many threads.
+  /// The firing of an interaction's atoms on other threads (multithread engine); null: they
+  /// fire in sequence.
+  ParallelFiringMaker parallel_firing = nullptr;
+  /// For parallel_firing: the threads, the caller's included.
   unsigned threads = 1;
-  /// Multithread scheduler: the least estimated work of an interaction's atoms, in
+  /// For parallel_firing: the least estimated work of an interaction's atoms, in
   /// instructions, for which they fire in parallel (0: always; tests use it).
   std::size_t parallel_min_work = 1000;
 };

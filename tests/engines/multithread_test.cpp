@@ -17,8 +17,8 @@
 #include "conformance_externs.h"
 #include "engines/engines.h"
 #include "engines/explore.h"
-#include "engines/parallel/fork_join_pool.h"
-#include "engines/semantics/parallel_firing.h"
+#include "engines/multithread/fork_join_pool.h"
+#include "engines/multithread/pool_firing.h"
 #include "engines/semantics/runtime.h"
 #include "random_model.h"
 #include "runtime_instance.h"
@@ -113,6 +113,7 @@ struct Instance : RuntimeInstance {
   static engines::RuntimeOptions options(unsigned threads) {
     engines::RuntimeOptions o;
     o.threads = threads;
+    if (threads > 1) o.parallel_firing = engines::make_pool_firing;
     o.parallel_min_work = 0;  // fork even for cheap atoms: the path under test
     return o;
   }
@@ -309,7 +310,7 @@ end
 
 TEST(ForkJoinPool, RunsEveryTaskOnceInEveryFork) {
   for (unsigned threads : {1u, 2u, 4u}) {
-    engines::parallel::ForkJoinPool pool(threads);
+    engines::multithread::ForkJoinPool pool(threads);
     ASSERT_EQ(pool.size(), threads);
     for (std::size_t count : {0u, 1u, 2u, 3u, 17u, 1000u}) {
       for (int fork = 0; fork < 50; ++fork) {

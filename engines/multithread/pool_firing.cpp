@@ -1,5 +1,7 @@
-// The multithread scheduler's execution of an interaction: connector `down`s in sequence, then
+// The multithread engine's execution of an interaction: connector `down`s in sequence, then
 // the atoms' transitions on the thread pool, with the reference engine's result and error.
+#include "engines/multithread/pool_firing.h"
+
 #include <algorithm>
 #include <exception>
 #include <functional>
@@ -7,8 +9,6 @@
 #include <string>
 
 #include "engines/api/simulate.h"
-#include "engines/semantics/interaction_execution.h"
-#include "engines/semantics/parallel_firing.h"
 
 namespace smcbip::engines {
 
@@ -66,46 +66,54 @@ std::vector<std::size_t> atom_type_firing_costs(const bipc::ir::System& system) 
   return costs;
 }
 
-ParallelFiring::ParallelFiring(const Model& model, const BoundFunctions& functions,
-                               const CallContext& main, unsigned threads)
-    : pool(threads),
-      safe_type(parallel_safe_atom_types(model.system(), functions)),
-      cost(atom_type_firing_costs(model.system())) {
-  for (unsigned t = 0; t < pool.size(); ++t) {
-    evaluators.push_back(std::make_unique<ThreadEvaluator>(model, functions, main));
+PoolFiring::PoolFiring(const Model& model, const BoundFunctions& functions, const CallContext& main,
+                       const RuntimeOptions& options)
+    : pool_(options.threads),
+      min_work_(options.parallel_min_work),
+      safe_type_(parallel_safe_atom_types(model.system(), functions)),
+      cost_(atom_type_firing_costs(model.system())) {
+  for (unsigned t = 0; t < pool_.size(); ++t) {
+    evaluators_.push_back(std::make_unique<ThreadEvaluator>(model, functions, main));
   }
-  seen.assign(model.system().atoms.size(), 0);
+  seen_.assign(model.system().atoms.size(), 0);
 }
 
-bool InteractionExecution::fires_in_parallel(Index index) {
-  ParallelFiring& p = *parallel_;
-  p.ports.clear();
-  append_atom_ports(index, p.ports);
+std::unique_ptr<ParallelFiring> make_pool_firing(const Model& model,
+                                                 const BoundFunctions& functions,
+                                                 const CallContext& main,
+                                                 const RuntimeOptions& options) {
+  return std::make_unique<PoolFiring>(model, functions, main, options);
+}
+
+bool PoolFiring::fires_in_parallel(const InteractionExecution& execution, Index index) {
+  ports_.clear();
+  execution.append_atom_ports(index, ports_);
   // Parallel firing must pay off and must not be observable: two atoms at least with enough
   // work between them, each of a parallel-safe type, none listed twice (its second firing
   // would see the first).
-  bool parallel = p.ports.size() >= 2;
+  bool parallel = ports_.size() >= 2;
   std::size_t work = 0;
-  ++p.execution;
-  for (const auto& [atom, port] : p.ports) {
+  ++execution_;
+  for (const auto& [atom, port] : ports_) {
     if (!parallel) break;
-    const Index type = system_.atoms[atom].type;
-    parallel = p.safe_type[type] && p.seen[atom] != p.execution;
-    p.seen[atom] = p.execution;
-    work += p.cost[type];
+    const Index type = execution.system().atoms[atom].type;
+    parallel = safe_type_[type] && seen_[atom] != execution_;
+    seen_[atom] = execution_;
+    work += cost_[type];
   }
-  return parallel && work >= parallel_min_work_;
+  return parallel && work >= min_work_;
 }
 
-std::size_t InteractionExecution::run_downs(Index index, std::optional<CodeFault>& fault) {
+std::size_t PoolFiring::run_downs(InteractionExecution& execution, Index index,
+                                  std::optional<CodeFault>& fault) {
   // A down only writes its own connector's data and the port data of atoms below it, which the
   // atoms fired before it in the reference order never read, so running the downs early changes
   // no value. A down that faults stops the reference engine after the atoms before it: only
   // those fire, and their errors come first.
   std::size_t atoms_so_far = 0;
   std::function<void(Index)> downs = [&](Index value) {
-    run_down(value);
-    for (const PortValue& pv : connectors_.values()[value].choice) {
+    execution.run_down(value);
+    for (const PortValue& pv : execution.values()[value].choice) {
       if (pv.from_atom) {
         ++atoms_so_far;
       } else {
@@ -119,24 +127,27 @@ std::size_t InteractionExecution::run_downs(Index index, std::optional<CodeFault
     fault = f;
     return atoms_so_far;
   }
-  return parallel_->ports.size();
+  return ports_.size();
 }
 
-bool InteractionExecution::fire_ports_in_parallel(std::size_t count) {
-  ParallelFiring& p = *parallel_;
-  p.fired.assign(count, 0);
-  p.errors.resize(count);
+bool PoolFiring::fire_ports(InteractionExecution& execution, std::size_t count) {
+  const bipc::ir::System& system = execution.system();
+  const Layout& layout = execution.layout();
+  std::vector<Val>& data = execution.state().data;
+  AtomFiring& atoms = execution.atoms();
+  fired_.assign(count, 0);
+  errors_.resize(count);
   auto fire = [&](std::size_t i, unsigned thread) {
-    ThreadEvaluator& t = *p.evaluators[thread];
-    const auto [atom, port] = p.ports[i];
-    const auto first = state_.data.begin() + static_cast<std::ptrdiff_t>(layout_.atom_data[atom]);
+    ThreadEvaluator& t = *evaluators_[thread];
+    const auto [atom, port] = ports_[i];
+    const auto first = data.begin() + static_cast<std::ptrdiff_t>(layout.atom_data[atom]);
     t.data.assign(first, first + static_cast<std::ptrdiff_t>(
-                                     system_.atom_types[system_.atoms[atom].type].data.size()));
-    AtomScratch s{*t.eval, p.errors[i], t.data.data(), /*on_worker=*/true, &t.priorities};
+                                     system.atom_types[system.atoms[atom].type].data.size()));
+    AtomScratch s{*t.eval, errors_[i], t.data.data(), /*on_worker=*/true, &t.priorities};
     try {
-      p.fired[i] = atoms_.fire_port(s, atom, port) ? 1 : 0;
+      fired_[i] = atoms.fire_port(s, atom, port) ? 1 : 0;
     } catch (const CodeFault& f) {
-      s.error = fault_error(system_, f);
+      s.error = fault_error(system, f);
     } catch (...) {
       // A user extern declared pure threw: no error channel on a worker thread.
       std::terminate();
@@ -144,26 +155,26 @@ bool InteractionExecution::fire_ports_in_parallel(std::size_t count) {
     // Also after a failure: the reference engine leaves the writes made before it.
     std::copy(t.data.begin(), t.data.end(), first);
   };
-  p.pool.run(count, fire);
+  pool_.run(count, fire);
   // The scheduler's bookkeeping is shared: the fired atoms are noted once the threads joined.
-  for (std::size_t i = 0; i < count; ++i) atoms_.note_changed(p.ports[i].first);
+  for (std::size_t i = 0; i < count; ++i) atoms.note_changed(ports_[i].first);
   for (std::size_t i = 0; i < count; ++i) {
-    if (!p.fired[i]) {
-      error_ = std::move(p.errors[i]);
+    if (!fired_[i]) {
+      execution.error() = std::move(errors_[i]);
       return false;
     }
   }
   return true;
 }
 
-bool InteractionExecution::execute_in_parallel(Index index) {
-  if (!fires_in_parallel(index)) return execute_in_sequence(index);
+std::optional<bool> PoolFiring::execute(InteractionExecution& execution, Index index) {
+  if (!fires_in_parallel(execution, index)) return std::nullopt;
   // The downs first, in the reference order; then the atoms before the first faulty down.
   std::optional<CodeFault> fault;
-  const std::size_t count = run_downs(index, fault);
-  if (!fire_ports_in_parallel(count)) return false;
+  const std::size_t count = run_downs(execution, index, fault);
+  if (!fire_ports(execution, count)) return false;
   if (fault) {
-    error_ = fault_error(system_, *fault);
+    execution.error() = fault_error(execution.system(), *fault);
     return false;
   }
   return true;

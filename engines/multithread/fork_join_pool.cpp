@@ -1,5 +1,5 @@
 // The fork-join pool: one published word per fork, claimed in chunks by compare-and-swap.
-#include "engines/parallel/fork_join_pool.h"
+#include "engines/multithread/fork_join_pool.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <immintrin.h>
 #endif
 
-namespace smcbip::engines::parallel {
+namespace smcbip::engines::multithread {
 
 namespace {
 
@@ -130,4 +130,4 @@ void ForkJoinPool::work(unsigned thread) {
   }
 }
 
-}  // namespace smcbip::engines::parallel
+}  // namespace smcbip::engines::multithread

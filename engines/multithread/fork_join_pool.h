@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-namespace smcbip::engines::parallel {
+namespace smcbip::engines::multithread {
 
 class ForkJoinPool {
  public:
@@ -63,4 +63,4 @@ class ForkJoinPool {
   std::vector<std::thread> workers_;
 };
 
-}  // namespace smcbip::engines::parallel
+}  // namespace smcbip::engines::multithread
