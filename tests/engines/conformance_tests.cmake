@@ -15,6 +15,7 @@ set(ENGINES_REALTIME_TEST_SOURCES conformance_realtime_test.cpp)
 # executables that use them.
 add_library(engines_test_support STATIC trace_oracles.cpp conformance_externs.cpp)
 target_link_libraries(engines_test_support PUBLIC engines GTest::gtest PRIVATE smcbip_warnings)
+target_compile_definitions(engines_test_support PRIVATE SMCBIP_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 list(APPEND ENGINES_TEST_SOURCES extern_ports_test.cpp builtins_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES explore_test.cpp interactive_test.cpp replay_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES limits_test.cpp maximal_interaction_test.cpp
