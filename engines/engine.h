@@ -3,8 +3,6 @@
 // on every run: same steps, same laws, same errors (tests/engines/cross_engine_test.cpp).
 #pragma once
 
-#include <string_view>
-
 #include "engines/api/simulate.h"
 #include "engines/semantics/runtime_types.h"
 
@@ -13,8 +11,6 @@ namespace smcbip::engines {
 class Engine {
  public:
   virtual ~Engine() = default;
-  /// The name `--engine` takes.
-  virtual std::string_view name() const = 0;
   /// The Runtime's options for runs with `options`: whether each connector's interactions are
   /// kept between steps (the incremental cache) and how an interaction's atoms fire (in
   /// sequence, or by a parallel firing).

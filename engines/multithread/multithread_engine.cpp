@@ -11,7 +11,6 @@ namespace {
 
 class MultithreadEngine final : public Engine {
  public:
-  std::string_view name() const override { return "multithread"; }
   RuntimeOptions runtime_options(const SimulateOptions& options) const override {
     RuntimeOptions r = semantics_options(options);
     r.incremental = true;

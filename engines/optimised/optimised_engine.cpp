@@ -6,7 +6,6 @@ namespace {
 
 class OptimisedEngine final : public Engine {
  public:
-  std::string_view name() const override { return "optimised"; }
   RuntimeOptions runtime_options(const SimulateOptions& options) const override {
     RuntimeOptions r = semantics_options(options);
     r.incremental = true;

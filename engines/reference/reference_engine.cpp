@@ -6,7 +6,6 @@ namespace {
 
 class ReferenceEngine final : public Engine {
  public:
-  std::string_view name() const override { return "reference"; }
   RuntimeOptions runtime_options(const SimulateOptions& options) const override {
     return semantics_options(options);
   }
