@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <mutex>
 #include <set>
@@ -74,14 +75,22 @@ TEST(OrderedSampler, RethrowsARunsExceptionAtItsTurn) {
 
 TEST(OrderedSampler, TheCallingThreadIsWorkerZero) {
   // No thread of its own for the consumer: with 2 threads, the caller and one helper make runs.
+  // The helper waits until the caller has made a run: otherwise a fast helper may make every run
+  // while the caller only consumes, and whether the caller makes one depends on the scheduler.
   const std::thread::id caller = std::this_thread::get_id();
   std::mutex mutex;
+  std::condition_variable caller_made_one;
   std::set<std::thread::id> makers;
   bool zero_elsewhere = false;
   OrderedSampler<std::uint64_t> sampler(2, [&](unsigned w, std::uint64_t i, std::uint64_t& out) {
-    const std::lock_guard lock(mutex);
+    std::unique_lock lock(mutex);
+    const bool on_caller = std::this_thread::get_id() == caller;
     makers.insert(std::this_thread::get_id());
-    zero_elsewhere = zero_elsewhere || (w == 0) != (std::this_thread::get_id() == caller);
+    zero_elsewhere = zero_elsewhere || (w == 0) != on_caller;
+    if (on_caller)
+      caller_made_one.notify_all();
+    else
+      caller_made_one.wait(lock, [&] { return makers.contains(caller); });
     out = i;
   });
   std::uint64_t expected = 0;
