@@ -5,13 +5,16 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "bipc/bipc.h"
@@ -120,6 +123,26 @@ inline std::string choices_text(const std::vector<std::string>& names) {
   std::string text;
   for (const std::string& name : names) text += (text.empty() ? "" : "|") + name;
   return text;
+}
+
+/// The transform of an enumeration's option: a name of `names` (any case) becomes its value, and
+/// any other word is refused with the names (CLI11's CheckedTransformer says "Check x value in
+/// {a->,b->}", which no one should have to read).
+template <class Enum>
+CLI::Validator named_choice(const std::map<std::string, Enum>& names) {
+  std::string listing;
+  for (const auto& entry : names) listing += (listing.empty() ? "" : ", ") + entry.first;
+  return CLI::Validator(
+      [names, listing](std::string& input) -> std::string {
+        std::string lower = input;
+        std::transform(lower.begin(), lower.end(), lower.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        const auto found = names.find(lower);
+        if (found == names.end()) return "'" + input + "' is not one of " + listing;
+        input = std::to_string(static_cast<std::underlying_type_t<Enum>>(found->second));
+        return {};
+      },
+      "");
 }
 
 }  // namespace smcbip::cli

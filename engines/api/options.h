@@ -26,13 +26,11 @@ namespace detail {
 inline void add_engine_options(CLI::App& app, SimulateOptions& options) {
   constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
   app.add_option("--engine", options.engine, "the scheduler (default: reference)")
-      ->transform(CLI::CheckedTransformer(
-                      std::map<std::string, EngineKind>{{"reference", EngineKind::Reference},
-                                                        {"optimised", EngineKind::Optimised},
-                                                        {"optimized", EngineKind::Optimised},
-                                                        {"multithread", EngineKind::Multithread}},
-                      CLI::ignore_case)
-                      .description(""))
+      ->transform(cli::named_choice(
+          std::map<std::string, EngineKind>{{"reference", EngineKind::Reference},
+                                            {"optimised", EngineKind::Optimised},
+                                            {"optimized", EngineKind::Optimised},
+                                            {"multithread", EngineKind::Multithread}}))
       ->option_text(cli::choices_text({"reference", "optimised", "multithread"}));
   cli::add_threads_option(app, options.threads,
                           "worker threads of the multithread engine, 0 for all cores", 0);
@@ -104,11 +102,8 @@ inline void register_simulate_options(CLI::App& app, SimulateOptions& options) {
   detail::add_run_mode_options(app, options);
   detail::add_stochastic_options(app, options);
   app.add_option("--trace", options.trace, "the trace's format (default: text)")
-      ->transform(
-          CLI::CheckedTransformer(std::map<std::string, TraceFormat>{{"text", TraceFormat::Text},
-                                                                     {"jsonl", TraceFormat::Jsonl}},
-                                  CLI::ignore_case)
-              .description(""))
+      ->transform(cli::named_choice(std::map<std::string, TraceFormat>{
+          {"text", TraceFormat::Text}, {"jsonl", TraceFormat::Jsonl}}))
       ->option_text(cli::choices_text({"text", "jsonl"}));
 }
 

@@ -111,7 +111,7 @@ int run(int argc, char** argv) {
   app.add_option("--wcet", args.package.wcet,
                  "how long a provided interface runs: no time, any time in its WCET bounds, or a "
                  "uniform draw in them (default zero)")
-      ->transform(CLI::CheckedTransformer(wcet, CLI::ignore_case).description(""))
+      ->transform(cli::named_choice(wcet))
       ->option_text(cli::choices_text({"zero", "interval", "uniform"}));
   cli::add_version_flags(app, "taste2bip");
   if (const int code = cli::parse_command_line(app, argc, argv); code >= 0) return code;

@@ -75,6 +75,10 @@ expect 2 "--threads: '0' is not a number of threads" "${base[@]}" --threads 0
 expect 64 "--threads: '100000' is not a number of threads" "${simulate[@]}" \
   --engine multithread --threads 100000
 expect 0 "" "${simulate[@]}" --engine multithread --threads 2 --seed 1
+expect 64 "--engine: 'bogus' is not one of multithread, optimised, optimized, reference" \
+  "${simulate[@]}" --engine bogus
+expect 64 "--trace: 'xml' is not one of jsonl, text" "${simulate[@]}" --trace xml
+expect 0 "" "${simulate[@]}" --engine OPTIMISED --trace JSONL --seed 1
 
 # --- --explore keeps a bounded number of states (it grew without end on an infinite space)
 expect 0 "" "${simulating[@]}" --explore --max-states 1000

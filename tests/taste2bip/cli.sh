@@ -25,7 +25,7 @@ view=$golden/sporadic_queue/interfaceview.xml
 expect 0 "" -- --version
 expect 0 "" -- --help
 expect 2 "" -- "$view"
-expect 2 "not-a-mode" -- "$view" -o "$work/a" --wcet not-a-mode
+expect 2 "'not-a-mode' is not one of interval, uniform, zero" -- "$view" -o "$work/a" --wcet not-a-mode
 expect 2 "FUNCTION=FILE" -- "$view" -o "$work/a" --atom Feeder
 expect 2 "is not a BIP identifier" -- "$view" -o "$work/a" --package 'my-package'
 expect 2 "no-such-view.xml" -- "$work/no-such-view.xml" -o "$work/a"
