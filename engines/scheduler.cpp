@@ -108,6 +108,8 @@ bool Scheduler::start_state() {
   return true;
 }
 
+bool Scheduler::started_from_kept_state() const { return parts_->initial_state.has_value(); }
+
 bool Scheduler::restart(std::uint64_t run_index) {
   random_ = RandomStream(shared_.seed, run_index);
   planner_.forget();

@@ -154,23 +154,21 @@ class Simulation {
   /// the step it could not make).
   std::optional<RunResult> run_compiled(CompiledSteps& steps) {
     DatePlanner* planner = shared_.stochastic ? &scheduler_.planner() : nullptr;
-    if (!steps.begin(
-            {runtime_, scheduler_.random(), planner, options_.asap, options_.first_enabled})) {
+    const bool absorbing_checks = shared_.absorbing_checks;
+    if (!steps.begin({runtime_, scheduler_.random(), planner, options_.asap,
+                      options_.first_enabled, scheduler_.started_from_kept_state(),
+                      absorbing_checks})) {
       return std::nullopt;
     }
     StepInfo info;
-    const bool absorbing_checks = shared_.absorbing_checks;
     for (;;) {
-      if (absorbing_checks) scheduler_.remember_discrete_state();
       switch (steps.step(options_.limit && steps_ >= *options_.limit, info)) {
         case CompiledSteps::Outcome::Fired:
           info.step = ++steps_;
           if (!observe(info)) return stopped();
           // A step that kept the places and data may have reached an absorbing state: the
           // scheduler, which tells, replays the run and goes on from there.
-          if (absorbing_checks && scheduler_.discrete_state_kept(runtime_.state())) {
-            return std::nullopt;
-          }
+          if (absorbing_checks && steps.step_kept_state()) return std::nullopt;
           continue;
         case CompiledSteps::Outcome::Deadlock:
           return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
@@ -345,7 +343,9 @@ RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
     jsonl.emplace(streams.trace, shared_->layout, shared_->seed, run_index);
   }
   Observers observers(observer, jsonl ? &*jsonl : nullptr);
-  Simulation simulation(*shared_, run_index, streams, observers);
+  // The caller's observer alone is called directly: a statistical check observes every step.
+  RunObserver& watching = jsonl || !observer ? observers : *observer;
+  Simulation simulation(*shared_, run_index, streams, watching);
   return shared_->options.explore ? simulation.explore() : simulation.run();
 }
 

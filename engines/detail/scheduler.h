@@ -161,6 +161,9 @@ class Scheduler {
   /// that a short run does not pay for the initial actions and items again. A path that
   /// falls back to the runtime's steps restarts it.
   bool start_state();
+  /// After start_state(): whether the state is the copy it keeps, the same in every run that
+  /// started so.
+  bool started_from_kept_state() const;
   /// start() for run `run_index` of the seed: a new run from the initial state, which reuses
   /// the buffers the last one grew.
   bool restart(std::uint64_t run_index);
@@ -185,15 +188,15 @@ class Scheduler {
   /// The stochastic race's date planner (a compiled step path draws with it, keeping its own
   /// plans).
   DatePlanner& planner() { return planner_; }
-  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
-  /// changed them.
-  void remember_discrete_state();
-  bool discrete_state_kept(const RunState& state) const;
   /// The model's compiled step path over runtime(), made by the first run that asks and kept
   /// by the next ones; null when the model has none.
   CompiledSteps* compiled_steps();
 
  private:
+  /// absorbing_checks: the places, data and pending resumes before a step, to tell whether it
+  /// changed them.
+  void remember_discrete_state();
+  bool discrete_state_kept(const RunState& state) const;
   /// An Error end with the runtime's error.
   const Decision& fail();
   const Decision& end(RunEnd end, int code = kRunOk);

@@ -26,6 +26,11 @@ class CompiledSteps {
     RandomStream& random;  // the run's stream
     DatePlanner* planner;  // stochastic mode: draws the dates of the race; else nullptr
     bool asap = false, first_enabled = false;
+    /// The run starts from the same state as every run before it that had this flag (the
+    /// Scheduler's kept initial state): what begin() computes from it may be reused.
+    bool kept_start = false;
+    /// Each step tells whether it left every place and datum as they were (step_kept_state).
+    bool checks_kept_state = false;
   };
   virtual ~CompiledSteps() = default;
   /// Takes over the run. False when its state is not covered.
@@ -33,6 +38,9 @@ class CompiledSteps {
   /// Decides and fires the next step (`info` tells which); Deadlock or Timelock when nothing
   /// is enabled (as the engines tell them apart), else Limit when `at_limit`.
   virtual Outcome step(bool at_limit, StepInfo& info) = 0;
+  /// Run::checks_kept_state: whether the last step that fired left every place and datum as
+  /// they were (Scheduler::discrete_state_kept), from what it fired alone.
+  virtual bool step_kept_state() const = 0;
 };
 
 }  // namespace smcbip::engines

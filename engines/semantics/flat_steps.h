@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -69,16 +70,72 @@ class FlatSteps final : public CompiledSteps {
     first_enabled_ = run.first_enabled;
     timed_ = planner_ != nullptr || !layout_.untimed;
     if (timed_ && t_.has_triggered) return false;
+    checks_kept_ = run.checks_kept_state;
+    // The race count goes on from the last run's, one race skipped: no plan of that run is
+    // then seen in the race before this run's first, so none is kept, and they need no reset.
+    if (plans_.size() != t_.positions()) plans_.assign(t_.positions(), DatePlanner::Plan{});
+    ++generation_;
+    if (run.kept_start && start_) {
+      restore(*start_);
+      return true;
+    }
+    if (!compute_start()) return false;
+    if (run.kept_start) start_ = save();
+    return true;
+  }
+
+  Outcome step(bool at_limit, StepInfo& info) override {
+    if (timed_) return timed_step(at_limit, info);
+    const std::size_t n = index_.total();
+    if (n == 0) return Outcome::Deadlock;
+    if (at_limit) return Outcome::Limit;
+    const SharedWindowChoice choice =
+        shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
+    return fire_and_check<false>(static_cast<std::uint32_t>(index_.find(choice.chosen)),
+                                 choice.date, info);
+  }
+
+  bool step_kept_state() const override { return kept_; }
+
+ private:
+  // The flags of positions and ports. Not std::uint8_t: a store through a character type may
+  // alias anything, so the compiler would reload every table's address after each.
+  enum class Flag : std::uint8_t { Off, On };
+  static Flag flag(bool on) { return on ? Flag::On : Flag::Off; }
+
+  /// What begin() computes from a run's start state: kept for runs from the same state.
+  struct Start {
+    std::vector<std::optional<AtomPortValue>> offers;
+    std::vector<Val> value_data;
+    EnabledPositions index;
+    std::vector<Flag> eager, enabled, chosen;
+    std::ptrdiff_t eager_count = 0;
+    std::vector<Constraint> raw;
+  };
+  Start save() const {
+    return {offers_, value_data_, index_, eager_, enabled_, chosen_, eager_count_, raw_};
+  }
+  // Assigned in place: the vectors keep their storage.
+  void restore(const Start& start) {
+    offers_ = start.offers;
+    value_data_ = start.value_data;
+    index_ = start.index;
+    eager_ = start.eager;
+    enabled_ = start.enabled;
+    chosen_ = start.chosen;
+    eager_count_ = start.eager_count;
+    raw_ = start.raw;
+    beyond_ = false;
+  }
+
+  /// The offers and items of the run's start state, afresh; false when it is not covered.
+  bool compute_start() {
     beyond_ = false;
     index_.reset(t_.positions());
     eager_.assign(t_.positions(), Flag::Off);
     eager_count_ = 0;
     enabled_.assign(t_.positions(), Flag::Off);
     raw_.assign(t_.positions(), Constraint{});
-    // The race count goes on from the last run's, one race skipped: no plan of that run is
-    // then seen in the race before this run's first, so none is kept, and they need no reset.
-    if (plans_.size() != t_.positions()) plans_.assign(t_.positions(), DatePlanner::Plan{});
-    ++generation_;
     try {
       for (Index a = 0; a < t_.atoms.size(); ++a) {
         if (!update_atom(a, atom_frame(a))) return false;
@@ -89,22 +146,6 @@ class FlatSteps final : public CompiledSteps {
     }
     return !beyond_;
   }
-
-  Outcome step(bool at_limit, StepInfo& info) override {
-    if (timed_) return timed_step(at_limit, info);
-    const std::size_t n = index_.total();
-    if (n == 0) return Outcome::Deadlock;
-    if (at_limit) return Outcome::Limit;
-    const SharedWindowChoice choice =
-        shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    return fire<false>(static_cast<std::uint32_t>(index_.find(choice.chosen)), choice.date, info);
-  }
-
- private:
-  // The flags of positions and ports. Not std::uint8_t: a store through a character type may
-  // alias anything, so the compiler would reload every table's address after each.
-  enum class Flag : std::uint8_t { Off, On };
-  static Flag flag(bool on) { return on ? Flag::On : Flag::Off; }
 
   /// An item of a timed step: its position and its window cut to the waiting window.
   struct Listed {
@@ -160,7 +201,7 @@ class FlatSteps final : public CompiledSteps {
       }
       if (!choice) return Outcome::Timelock;
     }
-    return fire<true>(items_[choice->first].position, choice->second, info);
+    return fire_and_check<true>(items_[choice->first].position, choice->second, info);
   }
 
   /// Cuts the first `listed` items' windows to `waiting`, keeping the non-empty ones in order;
@@ -247,6 +288,52 @@ class FlatSteps final : public CompiledSteps {
       return Outcome::Beyond;
     }
     return beyond_ ? Outcome::Beyond : Outcome::Fired;
+  }
+
+  /// fire(), and under Run::checks_kept_state whether it kept the bytes it may write. The
+  /// check stays out of fire(), whose code the runs without it would otherwise pay for.
+  template <bool Timed>
+  Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
+    // One call of fire(): inlined here, as it was into the step.
+    if (checks_kept_) remember_slices(p);
+    const Outcome outcome = fire<Timed>(p, date, info);
+    if (checks_kept_) kept_ = slices_kept(p);
+    return outcome;
+  }
+
+  /// Calls `f(bytes, size)` on each slice of the state that firing position `p` may write:
+  /// a connector's data and every bound atom's data and places (its `down` writes to their
+  /// data), or an internal port's atom's.
+  template <class F>
+  void for_each_slice(std::uint32_t p, F f) {
+    const auto atom_slices = [&](const FlatTables::Atom& atom) {
+      f(reinterpret_cast<const unsigned char*>(state_->data.data() + atom.data),
+        atom.data_size * sizeof(Val));
+      f(state_->marking.data() + atom.places, std::size_t{atom.place_count});
+    };
+    if (p >= connector_count_) return atom_slices(t_.internal[p - connector_count_].of);
+    const FlatTables::Connector& c = t_.connectors[p];
+    f(reinterpret_cast<const unsigned char*>(state_->data.data() + c.data),
+      c.data_size * sizeof(Val));
+    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) atom_slices(t_.ports[i].of);
+  }
+  [[gnu::noinline]] void remember_slices(std::uint32_t p) {
+    std::size_t at = 0;
+    for_each_slice(p, [&](const unsigned char* bytes, std::size_t size) {
+      if (at + size > slices_before_.size()) slices_before_.resize(at + size);
+      std::memcpy(slices_before_.data() + at, bytes, size);
+      at += size;
+    });
+  }
+  /// Bytes, as Scheduler::discrete_state_kept compares them.
+  [[gnu::noinline]] bool slices_kept(std::uint32_t p) {
+    std::size_t at = 0;
+    bool kept = true;
+    for_each_slice(p, [&](const unsigned char* bytes, std::size_t size) {
+      kept = kept && std::memcmp(slices_before_.data() + at, bytes, size) == 0;
+      at += size;
+    });
+    return kept;
   }
 
   /// Whether a step gathers the atoms it touched, the tables listing no affected positions.
@@ -493,6 +580,10 @@ class FlatSteps final : public CompiledSteps {
   std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
   std::uint64_t generation_ = 1;
   std::string problem_;
+  std::optional<Start> start_;  // Run::kept_start: what begin() computed from that state
+  // Run::checks_kept_state: the bytes the step may write, before it; whether it kept them.
+  bool checks_kept_ = false, kept_ = false;
+  std::vector<unsigned char> slices_before_;
 };
 
 /// The compiled step path over `code` for `system`, or nullptr when flat_tables does not cover

@@ -213,6 +213,8 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     atom.type = t;
     atom.data = static_cast<std::uint32_t>(layout.atom_data[a]);
     atom.places = static_cast<std::uint32_t>(layout.atom_places[a]);
+    atom.data_size = static_cast<std::uint32_t>(system.atom_types[t].data.size());
+    atom.place_count = static_cast<std::uint32_t>(system.atom_types[t].places.size());
     atom.params = static_cast<std::uint32_t>(layout.atom_params[a]);
     atom.clocks = static_cast<std::uint32_t>(layout.atom_clocks[a]);
     atom.first_offer = tables.offer_count;

@@ -17,6 +17,7 @@ struct FlatTables {
   struct Atom {
     Index type = 0;
     std::uint32_t data = 0, places = 0, params = 0, clocks = 0;
+    std::uint32_t data_size = 0, place_count = 0;
     std::uint32_t first_offer = 0;  // into the offers, one per port of its type
     std::uint32_t port_count = 0;   // the ports of its type
     std::uint32_t first_neighbour = 0, neighbours_end = 0;  // into `neighbours`

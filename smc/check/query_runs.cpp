@@ -59,6 +59,12 @@ class QueryRuns::Observer final : public engines::RunObserver {
   void start() { watching_.assign(observers_.begin(), observers_.end()); }
 
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
+    // One property, the usual case, without the erase's loop.
+    if (watching_.size() == 1) {
+      if (watching_.front()->observe(step, state)) return true;
+      watching_.clear();
+      return false;
+    }
     std::erase_if(watching_, [&](engines::RunObserver* o) { return !o->observe(step, state); });
     return !watching_.empty();
   }

@@ -45,6 +45,24 @@ TEST(Absorbing, UntimedLotteryStopsInItsAbsorbingStatesOnEveryEngine) {
   }
 }
 
+TEST(Absorbing, ARendezvousThatChangesNothingEndsTheRunOnEveryEngine) {
+  // The first three steps change the counter (and the first the echo), so none of them may end
+  // the run; the fourth keeps everything, and from there each run ends with its verdict.
+  for (const auto engine : {engines::EngineKind::Reference, engines::EngineKind::Optimised,
+                            engines::EngineKind::Multithread}) {
+    const auto results = check_test_model(
+        "rendezvous_loop.bip", "P=? [ F counter.n == 3 ]\nP=? [ F counter.n == 4 ]\n",
+        short_runs(engine));
+    ASSERT_EQ(results.size(), 2u);
+    for (const QueryResult& r : results) {
+      EXPECT_TRUE(r.error.empty()) << r.error;
+      EXPECT_EQ(r.undecided, 0u) << "engine " << static_cast<int>(engine);
+    }
+    EXPECT_EQ(results[0].estimate, 1.0);
+    EXPECT_EQ(results[1].estimate, 0.0);
+  }
+}
+
 TEST(Absorbing, DieWithSelfLoopsGivesEachFaceASixth) {
   const auto results = check_test_model(
       "die_self_loops.bip", "param k = {1, 2, 3, 4, 5, 6}\nP=? [ F die.s == 7 & die.d == k ]\n",
