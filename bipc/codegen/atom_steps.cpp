@@ -148,6 +148,31 @@ void fire_function(std::ostream& out, const ir::AtomType& type, ir::Index type_i
       << type_index << "\"};\n}\n\n";
 }
 
+/// CompiledAtomSteps::fire_and_offer: the type's own fire, internal and offers functions
+/// called straight (inlined when the type is small), the internal loop only where the type has
+/// internal transitions and the offers reset port by port as the engines reset them.
+void fire_and_offer_function(std::ostream& out, const ir::AtomType& type, ir::Index type_index) {
+  const std::string n = std::to_string(type_index);
+  out << "bool fire_and_offer_" << n
+      << "(void* context, ir::Index t, std::uint8_t* m, const se::Frame& f,\n"
+      << "    std::optional<se::AtomPortValue>* v) {\n"
+      << "  if (!fire_" << n << "(context, t, m, f)) return false;\n";
+  bool internal = false;
+  for (const ir::Transition& tr : type.transitions) internal = internal || tr.port == ir::kNone;
+  if (internal) {
+    out << "  for (;;) {\n"
+        << "    const ir::Index next = internal_" << n << "(context, m, f);\n"
+        << "    if (next == ir::kNone) break;\n"
+        << "    if (next == se::ModelCode::kSeveralTransitions || !fire_" << n
+        << "(context, next, m, f)) {\n"
+        << "      return false;\n    }\n  }\n";
+  }
+  if (!type.ports.empty()) {
+    out << "  for (std::size_t p = 0; p < " << type.ports.size() << "; ++p) v[p].reset();\n";
+  }
+  out << "  return offers_" << n << "(context, m, f, v) == ir::kNone;\n}\n\n";
+}
+
 }  // namespace
 
 AtomStepFunctions atom_step_functions(const ir::System& system) {
@@ -159,12 +184,14 @@ AtomStepFunctions atom_step_functions(const ir::System& system) {
     offers_function(out, type, k);
     internal_function(out, type, k);
     fire_function(out, type, k);
+    fire_and_offer_function(out, type, k);
     const std::string label = "      case " + std::to_string(k) + ": return ";
     const std::string n = std::to_string(k);
     functions.offers_cases += label + "offers_" + n + "(&c_, m, f, v);\n";
     functions.internal_cases += label + "internal_" + n + "(&c_, m, f);\n";
     functions.fire_cases += label + "fire_" + n + "(&c_, t, m, f);\n";
-    functions.table_entries += "    {offers_" + n + ", internal_" + n + ", fire_" + n + "},\n";
+    functions.table_entries +=
+        "    {offers_" + n + ", internal_" + n + ", fire_" + n + ", fire_and_offer_" + n + "},\n";
   }
   functions.definitions = out.str();
   return functions;

@@ -44,12 +44,28 @@ struct CompiledAtomSteps {
                               const Frame& frame) = nullptr;
   bool (*fire)(void* context, bipc::ir::Index transition, std::uint8_t* marking,
                const Frame& frame) = nullptr;
+  /// The three in one call, as a fired port of the atom needs them: fire `transition`, then
+  /// the internal transitions it enables one by one, then reset every port's offer and set
+  /// them afresh (offers). False where one of them fails: a token on a marked place, several
+  /// internal transitions enabled, a second enabled transition on a port.
+  bool (*fire_and_offer)(void* context, bipc::ir::Index transition, std::uint8_t* marking,
+                         const Frame& frame, std::optional<AtomPortValue>* offers) = nullptr;
 };
 
-/// Every atom type's steps (indexed by the IR's atom type), and the context they take.
+/// A Code of the system compiled (ModelCode::evaluate or execute of that Code alone), found by
+/// Code::id: `evaluate` for an expression or guard, `execute` for a statement block; both null
+/// for empty code and code the generator left to the interface.
+struct CompiledCode {
+  Val (*evaluate)(void* context, const Frame& frame) = nullptr;
+  void (*execute)(void* context, const Frame& frame) = nullptr;
+};
+
+/// Every atom type's steps (indexed by the IR's atom type) and every Code (indexed by
+/// Code::id; may be shorter, or empty), and the context they take.
 struct CompiledAtoms {
   std::span<const CompiledAtomSteps> types;
   void* context = nullptr;
+  std::span<const CompiledCode> code;
 };
 
 /// Runs a model's code over one frame (an atom's or a connector's slots, and the date). One per

@@ -42,7 +42,9 @@
 
 namespace smcbip::engines {
 
-/// `Code`: the model's ModelCode class, final so that its calls bind statically.
+/// `Code`: the model's ModelCode class, final so that its calls bind statically. When it has
+/// `atom_fire_and_offer` (CompiledAtomSteps::fire_and_offer's arguments after the type), a
+/// fired port calls that alone instead of atom_fire, atom_internal and atom_offers.
 template <class Code>
 class FlatSteps final : public CompiledSteps {
  public:
@@ -412,19 +414,31 @@ class FlatSteps final : public CompiledSteps {
       touched_[a] = stamp_;
       touched_list_.push_back(a);
     }
+    return fire_atom(atom, offer->transition);
+  }
+
+  /// Fires `transition` of `atom`, then the internal transitions it enables, then sets its
+  /// offers afresh; false on an error. Inline, as it was when part of fire_port.
+  [[gnu::always_inline]] bool fire_atom(const FlatTables::Atom& atom, Index transition) {
     const Frame f = atom_frame(atom);
     std::uint8_t* marking = state_->marking.data() + atom.places;
-    if (!code_.atom_fire(atom.type, offer->transition, marking, f)) return false;
-    if (atom.has_internal_transitions) {
-      for (;;) {
-        const Index t = code_.atom_internal(atom.type, marking, f);
-        if (t == bipc::ir::kNone) break;
-        if (t == ModelCode::kSeveralTransitions || !code_.atom_fire(atom.type, t, marking, f)) {
-          return false;
+    if constexpr (requires { &Code::atom_fire_and_offer; }) {
+      // Code that has the three in one call (generated code's table) saves the calls between.
+      return code_.atom_fire_and_offer(atom.type, transition, marking, f,
+                                       offers_.data() + atom.first_offer);
+    } else {
+      if (!code_.atom_fire(atom.type, transition, marking, f)) return false;
+      if (atom.has_internal_transitions) {
+        for (;;) {
+          const Index t = code_.atom_internal(atom.type, marking, f);
+          if (t == bipc::ir::kNone) break;
+          if (t == ModelCode::kSeveralTransitions || !code_.atom_fire(atom.type, t, marking, f)) {
+            return false;
+          }
         }
       }
+      return update_atom(atom, f, marking);
     }
-    return update_atom(atom, f, marking);
   }
 
   /// InteractionExecution::execute_in_sequence for a rendezvous: `down` over the value, its data written back, then

@@ -8,17 +8,29 @@ namespace smcbip::engines {
 
 namespace {
 
-/// Generated code seen through its exported table: the atom steps are calls through the
-/// table's pointers (one indirect call each, as a switch on the type would cost), the rest goes
-/// to the code. Final, so that the flat step path binds its calls to these statically.
+/// Generated code seen through its exported table: the atom steps and the compiled Code are
+/// calls through the table's pointers (one indirect call each, as a switch on the type or id
+/// would cost), the rest goes to the code. Final, so that the flat step path binds its calls to
+/// these statically.
 class TableAtoms final : public ModelCode {
  public:
   TableAtoms(ModelCode& code, const CompiledAtoms& atoms) : code_(code), atoms_(atoms) {}
 
   Val evaluate(const bipc::ir::Code& code, const Frame& frame) override {
+    if (code.id < atoms_.code.size()) {
+      if (const auto compiled = atoms_.code[code.id].evaluate) {
+        return compiled(atoms_.context, frame);
+      }
+    }
     return code_.evaluate(code, frame);
   }
   void execute(const bipc::ir::Code& code, const Frame& frame) override {
+    if (code.empty()) return;
+    if (code.id < atoms_.code.size()) {
+      if (const auto compiled = atoms_.code[code.id].execute) {
+        return compiled(atoms_.context, frame);
+      }
+    }
     code_.execute(code, frame);
   }
   Interval holds_when(const bipc::ir::Code& code, const Frame& frame) override {
@@ -38,6 +50,11 @@ class TableAtoms final : public ModelCode {
   bool atom_fire(bipc::ir::Index type, bipc::ir::Index transition, std::uint8_t* marking,
                  const Frame& frame) override {
     return atoms_.types[type].fire(atoms_.context, transition, marking, frame);
+  }
+  /// The flat step path's fired port in one call (CompiledAtomSteps::fire_and_offer).
+  bool atom_fire_and_offer(bipc::ir::Index type, bipc::ir::Index transition, std::uint8_t* marking,
+                           const Frame& frame, std::optional<AtomPortValue>* offers) {
+    return atoms_.types[type].fire_and_offer(atoms_.context, transition, marking, frame, offers);
   }
 
  private:
@@ -67,7 +84,10 @@ std::unique_ptr<CompiledSteps> make_plugin_steps(ModelCode& code, const Compiled
                                                  const bipc::ir::System& system,
                                                  const Layout& layout) {
   for (const CompiledAtomSteps& type : atoms.types) {
-    if (type.offers == nullptr || type.internal == nullptr || type.fire == nullptr) return nullptr;
+    if (type.offers == nullptr || type.internal == nullptr || type.fire == nullptr ||
+        type.fire_and_offer == nullptr) {
+      return nullptr;
+    }
   }
   auto steps = std::make_unique<PluginSteps>(code, atoms, system, layout);
   if (!steps->covered()) return nullptr;
