@@ -18,7 +18,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -37,6 +36,7 @@
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime.h"
 #include "engines/semantics/shared_window.h"
+#include "engines/semantics/written_slices.h"
 #include "engines/stochastic/date_planner.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -297,45 +297,10 @@ class FlatSteps final : public CompiledSteps {
   template <bool Timed>
   Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
     // One call of fire(): inlined here, as it was into the step.
-    if (checks_kept_) remember_slices(p);
+    if (checks_kept_) written_.remember(t_, *state_, p);
     const Outcome outcome = fire<Timed>(p, date, info);
-    if (checks_kept_) kept_ = slices_kept(p);
+    if (checks_kept_) kept_ = written_.kept(t_, *state_, p);
     return outcome;
-  }
-
-  /// Calls `f(bytes, size)` on each slice of the state that firing position `p` may write:
-  /// a connector's data and every bound atom's data and places (its `down` writes to their
-  /// data), or an internal port's atom's.
-  template <class F>
-  void for_each_slice(std::uint32_t p, F f) {
-    const auto atom_slices = [&](const FlatTables::Atom& atom) {
-      f(reinterpret_cast<const unsigned char*>(state_->data.data() + atom.data),
-        atom.data_size * sizeof(Val));
-      f(state_->marking.data() + atom.places, std::size_t{atom.place_count});
-    };
-    if (p >= connector_count_) return atom_slices(t_.internal[p - connector_count_].of);
-    const FlatTables::Connector& c = t_.connectors[p];
-    f(reinterpret_cast<const unsigned char*>(state_->data.data() + c.data),
-      c.data_size * sizeof(Val));
-    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) atom_slices(t_.ports[i].of);
-  }
-  [[gnu::noinline]] void remember_slices(std::uint32_t p) {
-    std::size_t at = 0;
-    for_each_slice(p, [&](const unsigned char* bytes, std::size_t size) {
-      if (at + size > slices_before_.size()) slices_before_.resize(at + size);
-      std::memcpy(slices_before_.data() + at, bytes, size);
-      at += size;
-    });
-  }
-  /// Bytes, as Scheduler::discrete_state_kept compares them.
-  [[gnu::noinline]] bool slices_kept(std::uint32_t p) {
-    std::size_t at = 0;
-    bool kept = true;
-    for_each_slice(p, [&](const unsigned char* bytes, std::size_t size) {
-      kept = kept && std::memcmp(slices_before_.data() + at, bytes, size) == 0;
-      at += size;
-    });
-    return kept;
   }
 
   /// Whether a step gathers the atoms it touched, the tables listing no affected positions.
@@ -597,7 +562,7 @@ class FlatSteps final : public CompiledSteps {
   std::optional<Start> start_;  // Run::kept_start: what begin() computed from that state
   // Run::checks_kept_state: the bytes the step may write, before it; whether it kept them.
   bool checks_kept_ = false, kept_ = false;
-  std::vector<unsigned char> slices_before_;
+  WrittenSlices written_;
 };
 
 /// The compiled step path over `code` for `system`, or nullptr when flat_tables does not cover
