@@ -11,14 +11,19 @@
 # above 1: smcbip is faster). CPU time, because a machine shared with other work stretches wall
 # time by its load; PRISM's JVM counts the CPU of its compiler and collector threads too.
 # smcbip runs interpreted (`--compile never`): a plugin cached by an earlier check would
-# otherwise make the figures depend on what ran before.
+# otherwise make the figures depend on what ran before. Beside it, unless COMPILED=0, the row
+# `compiled` is smcbip on the model's generated code, as a check finds it in its cache once an
+# earlier check built it: the plugins are built into a fresh cache folder before the timed
+# runs (that build is not timed; `--compile auto` makes it when the runs are expected to take
+# longer), and the last column gives each peer's time per run over this row's.
 #
 # The peers are found through the environment, e.g. YMER=/path/to/ymer PRISM=/path/to/prism
 # (PRISM's bin/prism script); without them it prints smcbip's own figures and names what is
 # missing. The models the peers read are bench/peers/*.sm (transcriptions of models/tandem.bip
 # and models/knuth_yao.bip into PRISM's language) with the properties bench/peers/*.csl.
 #
-# Usage: [YMER=...] [PRISM=...] [REPEAT=5] bench/peers.sh [BUILD_DIR]   (default: build)
+# Usage: [YMER=...] [PRISM=...] [REPEAT=5] [COMPILED=0] bench/peers.sh [BUILD_DIR]
+#        (default: build)
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -46,8 +51,12 @@ sed -i 's/^P=?/const k = 1\nP=?/' "$work/die.mtl"
 
 # The cases: name, then per tool the command line (empty: not run), and each tool's runs.
 declare -A command runs
+cache="$work/cache"
 add_case() {  # name smcbip-args ymer-args prism-args
   command[$1/smcbip]="$smcbip check $2 --threads 1 --json --compile never"
+  if [[ ${COMPILED:-1} != 0 ]]; then
+    command[$1/compiled]="env SMCBIP_CACHE_DIR=$cache $smcbip check $2 --threads 1 --json"
+  fi
   command[$1/ymer]=${YMER:+${3:+$YMER $3}}
   command[$1/prism]=${PRISM:+${4:+$PRISM $4}}
 }
@@ -67,7 +76,7 @@ add_case tandem_sprt "models/tandem.bip $peers/tandem_sprt.mtl --alpha 0.01 --be
 # The runs and the answer of one tool's output.
 read_answer() {  # tool output-file
   case $1 in
-    smcbip)
+    smcbip | compiled)
       python3 -c 'import json, sys
 r = json.load(open(sys.argv[1]))["results"][0]
 a = r.get("verdict")
@@ -87,12 +96,26 @@ print(r["samples"] + r["undecided"], str(a).lower())' "$2" ;;
   esac
 }
 
+# The compiled model of each model file, built once into the cache before anything is timed.
+if [[ ${COMPILED:-1} != 0 ]]; then
+  for model in models/tandem.bip models/knuth_yao.bip; do
+    property=$([[ $model == *tandem* ]] && echo models/tandem.mtl || echo "$work/die.mtl")
+    if ! SMCBIP_CACHE_DIR=$cache "$smcbip" check "$model" "$property" --alpha 0.1 --delta 0.1 \
+      --threads 1 --compile always >/dev/null 2>"$work/err" || grep -q warning "$work/err"; then
+      echo "peers: the compiled model of $model could not be built; its rows are left out:"
+      cat "$work/err"
+      for c in "${cases[@]}"; do unset "command[$c/compiled]"; done
+      break
+    fi
+  done
+fi
+
 echo "peers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); one thread each, median of $repeat"
 declare -A times cpus answer
 TIMEFORMAT='%R %U %S'
 for ((k = 0; k < repeat; k++)); do
   for c in "${cases[@]}"; do
-    for tool in smcbip ymer prism; do
+    for tool in smcbip compiled ymer prism; do
       cmd=${command[$c/$tool]:-}
       [[ -z $cmd ]] && continue
       # Ymer and PRISM write their answer to stdout, smcbip its JSON (its exit code is the
@@ -100,7 +123,12 @@ for ((k = 0; k < repeat; k++)); do
       status=0
       # shellcheck disable=SC2086
       { time $cmd >"$work/out" 2>"$work/err" || status=$?; } 2>"$work/time"
-      if ((status != 0)) && [[ $tool != smcbip ]]; then
+      if [[ $tool == compiled ]] && ! grep -q "using the compiled model" "$work/err"; then
+        echo "peers: the compiled run of $c did not use the cached plugin:" >&2
+        cat "$work/err" >&2
+        exit 1
+      fi
+      if ((status != 0)) && [[ $tool != smcbip && $tool != compiled ]]; then
         echo "peers: $tool failed on $c: $cmd" >&2
         cat "$work/out" "$work/err" >&2
         exit 1
@@ -116,23 +144,29 @@ done
 median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 # CPU: user plus system seconds, summed per run before the median.
 cpu_median() { tr ' ' '\n' <<<"${cpus[$1]}" | paste - - | awk '{ print $1 + $2 }' | tr '\n' ' ' | median; }
-printf '%-14s %-7s %8s %8s %8s %10s %-9s %s\n' case tool runs wall/s cpu/s runs/s answer \
-  "peer/smcbip"
+printf '%-14s %-8s %8s %8s %8s %10s %-9s %-12s %s\n' case tool runs wall/s cpu/s runs/s answer \
+  "peer/smcbip" "peer/compiled"
+# A peer's CPU time over a base tool's: per run in the fixed-size cases (PRISM makes fewer runs
+# of the die), whole tests in the sequential one (run counts differ by method); empty for the
+# base itself or when the base did not run.
+ratio() {  # case tool base
+  [[ $2 == "$3" || -z ${cpus[$1/$3]:-} ]] && return
+  awk -v u="$(cpu_median "$1/$2")" -v n="${runs[$1/$2]}" -v b="$(cpu_median "$1/$3")" \
+    -v nb="${runs[$1/$3]}" -v sprt="${1/*sprt*/1}" '
+    BEGIN { printf "%.2f", (sprt == 1 || n !~ /^[0-9]+$/) ? u / b : (u / n) / (b / nb) }'
+}
 for c in "${cases[@]}"; do
-  base=$(cpu_median "$c/smcbip")
-  for tool in smcbip ymer prism; do
+  for tool in smcbip compiled ymer prism; do
     [[ -z ${times[$c/$tool]:-} ]] && continue
     m=$(median <<<"${times[$c/$tool]}")
     cpu=$(cpu_median "$c/$tool")
-    awk -v c="$c" -v t="$tool" -v n="${runs[$c/$tool]}" -v m="$m" -v u="$cpu" -v b="$base" \
-      -v nb="${runs[$c/smcbip]}" -v a="${answer[$c/$tool]}" -v sprt="${c/*sprt*/1}" '
+    over_compiled=$([[ $tool == smcbip ]] || ratio "$c" "$tool" compiled)
+    awk -v c="$c" -v t="$tool" -v n="${runs[$c/$tool]}" -v m="$m" -v u="$cpu" \
+      -v a="${answer[$c/$tool]}" -v r="$(ratio "$c" "$tool" smcbip)" -v rc="$over_compiled" '
       BEGIN {
         if (a ~ /^[0-9.]+$/) a = sprintf("%.5f", a)
-        # The fixed-size cases compare time per run (PRISM makes fewer runs of the die); the
-        # sequential test compares whole tests, whose run counts differ by method.
-        r = (sprt == 1 || n !~ /^[0-9]+$/) ? u / b : (u / n) / (b / nb)
-        printf "%-14s %-7s %8s %8.3f %8.3f %10s %-9s %s\n", c, t, n, m, u,
-          n ~ /^[0-9]+$/ ? sprintf("%.0f", n / m) : "-", a, t == "smcbip" ? "" : sprintf("%.2f", r)
+        printf "%-14s %-8s %8s %8.3f %8.3f %10s %-9s %-12s %s\n", c, t, n, m, u,
+          n ~ /^[0-9]+$/ ? sprintf("%.0f", n / m) : "-", a, r, rc
       }'
   done
 done
