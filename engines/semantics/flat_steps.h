@@ -73,6 +73,7 @@ class FlatSteps final : public CompiledSteps {
     timed_ = planner_ != nullptr || !layout_.untimed;
     if (timed_ && t_.has_triggered) return false;
     checks_kept_ = run.checks_kept_state;
+    if (checks_kept_ && !written_) written_.emplace(t_);
     // The race count goes on from the last run's, one race skipped: no plan of that run is
     // then seen in the race before this run's first, so none is kept, and they need no reset.
     if (plans_.size() != t_.positions()) plans_.assign(t_.positions(), DatePlanner::Plan{});
@@ -297,9 +298,9 @@ class FlatSteps final : public CompiledSteps {
   template <bool Timed>
   Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
     // One call of fire(): inlined here, as it was into the step.
-    if (checks_kept_) written_.remember(t_, *state_, p);
+    if (checks_kept_) written_->remember(*state_, p);
     const Outcome outcome = fire<Timed>(p, date, info);
-    if (checks_kept_) kept_ = written_.kept(t_, *state_, p);
+    if (checks_kept_) kept_ = written_->kept(*state_, p);
     return outcome;
   }
 
@@ -562,7 +563,7 @@ class FlatSteps final : public CompiledSteps {
   std::optional<Start> start_;  // Run::kept_start: what begin() computed from that state
   // Run::checks_kept_state: the bytes the step may write, before it; whether it kept them.
   bool checks_kept_ = false, kept_ = false;
-  WrittenSlices written_;
+  std::optional<WrittenSlices> written_;  // made by the first run that checks
 };
 
 /// The compiled step path over `code` for `system`, or nullptr when flat_tables does not cover

@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "engines/semantics/flat_tables.h"
@@ -15,45 +14,28 @@ namespace smcbip::engines {
 
 class WrittenSlices {
  public:
+  /// The slices of each position of `t`: a connector's data and every bound atom's data and
+  /// places (its `down` writes to their data), or an internal port's atom's; adjacent ones
+  /// merged, so that a broadcast over neighbouring atoms copies one run of bytes, not one per
+  /// atom.
+  explicit WrittenSlices(const FlatTables& t);
+
   /// Before firing position `p` in `state`: copies the slices it may write.
-  void remember(const FlatTables& t, const RunState& state, std::uint32_t p) {
-    std::size_t at = 0;
-    for_each_slice(t, state, p, [&](const unsigned char* bytes, std::size_t size) {
-      if (at + size > before_.size()) before_.resize(at + size);
-      std::memcpy(before_.data() + at, bytes, size);
-      at += size;
-    });
-  }
+  void remember(const RunState& state, std::uint32_t p);
   /// After: whether they hold the bytes remembered (bytes, as the scheduler compares them).
-  bool kept(const FlatTables& t, const RunState& state, std::uint32_t p) const {
-    std::size_t at = 0;
-    bool same = true;
-    for_each_slice(t, state, p, [&](const unsigned char* bytes, std::size_t size) {
-      same = same && std::memcmp(before_.data() + at, bytes, size) == 0;
-      at += size;
-    });
-    return same;
-  }
+  bool kept(const RunState& state, std::uint32_t p) const;
 
  private:
-  /// Calls `f(bytes, size)` on each slice of `state` that firing position `p` may write: a
-  /// connector's data and every bound atom's data and places (its `down` writes to their
-  /// data), or an internal port's atom's.
-  template <class F>
-  static void for_each_slice(const FlatTables& t, const RunState& state, std::uint32_t p, F f) {
-    const auto atom_slices = [&](const FlatTables::Atom& atom) {
-      f(reinterpret_cast<const unsigned char*>(state.data.data() + atom.data),
-        atom.data_size * sizeof(Val));
-      f(state.marking.data() + atom.places, std::size_t{atom.place_count});
-    };
-    if (p >= t.connectors.size()) return atom_slices(t.internal[p - t.connectors.size()].of);
-    const FlatTables::Connector& c = t.connectors[p];
-    f(reinterpret_cast<const unsigned char*>(state.data.data() + c.data),
-      c.data_size * sizeof(Val));
-    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) atom_slices(t.ports[i].of);
-  }
+  /// A run of bytes of the state's data (else of its marking).
+  struct Slice {
+    std::uint32_t first = 0, size = 0;
+    bool data = true;
+  };
+  static const unsigned char* bytes_of(const RunState& state, const Slice& slice);
 
-  std::vector<unsigned char> before_;
+  std::vector<Slice> slices_;               // per position, merged
+  std::vector<std::uint32_t> first_slice_;  // per position, into slices_ (one past the last)
+  std::vector<unsigned char> before_;       // the largest position's bytes
 };
 
 }  // namespace smcbip::engines
