@@ -113,9 +113,13 @@ fi
 echo "peers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); one thread each, median of $repeat"
 declare -A times cpus answer
 TIMEFORMAT='%R %U %S'
+tools=(smcbip compiled ymer prism)
 for ((k = 0; k < repeat; k++)); do
+  # The tools' order turns by one at each repetition: the run after PRISM's (a JVM that keeps
+  # both cores busy) was slower whichever tool it was, and would otherwise always be smcbip's.
+  order=("${tools[@]:k % 4}" "${tools[@]:0:k % 4}")
   for c in "${cases[@]}"; do
-    for tool in smcbip compiled ymer prism; do
+    for tool in "${order[@]}"; do
       cmd=${command[$c/$tool]:-}
       [[ -z $cmd ]] && continue
       # Ymer and PRISM write their answer to stdout, smcbip its JSON (its exit code is the
