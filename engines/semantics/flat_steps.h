@@ -7,10 +7,8 @@
 // It makes the Runtime's and Scheduler's choices with the same draws. Items sit at positions
 // (the listed connectors in listing order, then the internal ports). On an untimed layout they
 // are kept in EnabledPositions (the order of ItemIndex's counts) and chosen by SharedWindowChooser;
-// on a timed one (or in stochastic mode) each has its constraint, the waiting window cuts them as
-// Runtime::wait_interval does, and the reference race (random_race) or the stochastic race of
-// planned dates (earliest_in_window, dates kept per position as DatePlanner keeps them per
-// item) chooses. The firing is that of InteractionExecution::execute_in_sequence
+// on a timed one (or in stochastic mode) each has its constraint, and FlatTimedChoice chooses
+// among them as the Scheduler does (flat_timed_choice.h). The firing is that of InteractionExecution::execute_in_sequence
 // and AtomFiring::fire_port.
 // Whatever the Runtime would report as an error (1-safety, non-determinism, code faults) ends
 // the path as Beyond: the engines then replay the run, which tells the error as they do.
@@ -32,6 +30,7 @@
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/enabled_positions.h"
 #include "engines/semantics/flat_tables.h"
+#include "engines/semantics/flat_timed_choice.h"
 #include "engines/semantics/item_race.h"
 #include "engines/semantics/layout.h"
 #include "engines/semantics/runtime.h"
@@ -60,7 +59,6 @@ class FlatSteps final : public CompiledSteps {
     touched_.assign(t_.atoms.size(), 0);
     chosen_.assign(t_.ports.size(), Flag::Off);
     recomputed_.assign(t_.positions(), 0);
-    items_.resize(t_.positions());
   }
 
   bool begin(const Run& run) override {
@@ -74,10 +72,7 @@ class FlatSteps final : public CompiledSteps {
     if (timed_ && t_.has_triggered) return false;
     checks_kept_ = run.checks_kept_state;
     if (checks_kept_ && !written_) written_.emplace(t_);
-    // The race count goes on from the last run's, one race skipped: no plan of that run is
-    // then seen in the race before this run's first, so none is kept, and they need no reset.
-    if (plans_.size() != t_.positions()) plans_.assign(t_.positions(), DatePlanner::Plan{});
-    ++generation_;
+    timed_choice_.new_run(t_.positions());
     if (run.kept_start && start_) {
       restore(*start_);
       return true;
@@ -101,9 +96,8 @@ class FlatSteps final : public CompiledSteps {
   bool step_kept_state() const override { return kept_; }
 
  private:
-  // The flags of positions and ports. Not std::uint8_t: a store through a character type may
-  // alias anything, so the compiler would reload every table's address after each.
-  enum class Flag : std::uint8_t { Off, On };
+  // The flags of positions and ports (not std::uint8_t: see FlatFlag).
+  using Flag = FlatFlag;
   static Flag flag(bool on) { return on ? Flag::On : Flag::Off; }
 
   /// What begin() computes from a run's start state: kept for runs from the same state.
@@ -150,102 +144,13 @@ class FlatSteps final : public CompiledSteps {
     return !beyond_;
   }
 
-  /// An item of a timed step: its position and its window cut to the waiting window.
-  struct Listed {
-    std::uint32_t position = 0;
-    Interval window;
-    TimeValue date = 0;  // stochastic mode: its planned date
-  };
-  /// A step on a timed layout or in stochastic mode: the items cut to the waiting window (as
-  /// Runtime::compute_items lists them), then the Scheduler's choice among them.
+  /// A step on a timed layout or in stochastic mode (FlatTimedChoice).
   Outcome timed_step(bool at_limit, StepInfo& info) {
-    const TimeValue now = state_->now;
-    const std::uint32_t positions = position_count_;
-    // One pass lists the items from now on and gathers the waiting window; only when an item
-    // is not lazy (the window may then be cut) does a second pass over the listed ones cut them.
-    const Interval from_now = Interval::from(now);
-    Interval waiting = from_now;
-    bool waits = false;
-    // items_ has room for every position (begin): an item is written in place and kept when
-    // its window is not empty.
-    std::size_t listed = 0;
-    for (std::uint32_t p = 0; p < positions; ++p) {
-      if (enabled_[p] == Flag::Off) continue;
-      if (raw_[p].urgency != bipc::Urgency::Lazy) {
-        narrow(waiting, detail::wait(raw_[p], now));
-        waits = true;
-      }
-      // Copied field by field for the reason recompute_timed gives.
-      Listed& item = items_[listed];
-      item.position = p;
-      item.window.left = raw_[p].interval.left;
-      item.window.right = raw_[p].interval.right;
-      item.window.left_open = raw_[p].interval.left_open;
-      item.window.right_open = raw_[p].interval.right_open;
-      narrow(item.window, from_now);
-      listed += item.window.empty() ? 0 : 1;
-    }
-    // Intersections commute: cutting by now and then by the waiting window is cutting by both.
-    if (waits) listed = cut_to(waiting, listed);
-    items_count_ = listed;
-    if (listed == 0) {
-      return waiting.right == kPlusInfinity ? Outcome::Deadlock : Outcome::Timelock;
-    }
-    if (at_limit) return Outcome::Limit;
-    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
-    std::optional<std::pair<std::size_t, TimeValue>> choice;
-    if (planner_ == nullptr) {
-      choice = random_race(items_count_, window, now, asap_, first_enabled_, *random_);
-    } else {
-      try {
-        if (!race(choice)) return Outcome::Beyond;
-      } catch (const CodeFault&) {
-        return Outcome::Beyond;
-      }
-      if (!choice) return Outcome::Timelock;
-    }
-    return fire_and_check<true>(items_[choice->first].position, choice->second, info);
-  }
-
-  /// Cuts the first `listed` items' windows to `waiting`, keeping the non-empty ones in order;
-  /// how many are kept.
-  std::size_t cut_to(const Interval& waiting, std::size_t listed) {
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < listed; ++i) {
-      narrow(items_[i].window, waiting);
-      if (items_[i].window.empty()) continue;
-      if (kept != i) items_[kept] = items_[i];
-      ++kept;
-    }
-    return kept;
-  }
-
-  /// Scheduler::race over items_: DatePlanner::plan's kept or new dates, then the earliest in
-  /// its window, or after replan_within_windows; false when a date cannot be drawn.
-  bool race(std::optional<std::pair<std::size_t, TimeValue>>& choice) {
-    ++generation_;
-    for (Listed& item : listed_items()) {
-      DatePlanner::Plan& plan = plans_[item.position];
-      const auto stochastic = [&] { return t_.stochastic[item.position]; };
-      if (!planner_->renew(*runtime_, plan, generation_, raw_[item.position], stochastic,
-                           problem_)) {
-        return false;
-      }
-      item.date = plan.date;
-    }
-    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
-    const auto date = [&](std::size_t i) { return items_[i].date; };
-    choice = earliest_in_window(items_count_, window, date, *random_);
-    if (!choice) {
-      for (Listed& item : listed_items()) {
-        if (t_.stochastic[item.position]) continue;
-        item.date = planner_->draw_timed(raw_[item.position].urgency, item.window);
-        plans_[item.position].date = item.date;
-      }
-      choice = earliest_in_window(items_count_, window, date, *random_);
-    }
-    if (choice) DatePlanner::fired(plans_[items_[choice->first].position]);
-    return true;
+    const FlatTimedChoice::Choice choice =
+        timed_choice_.choose(state_->now, at_limit, {enabled_, raw_, t_.stochastic},
+                             {runtime_, random_, planner_, asap_, first_enabled_});
+    if (choice.outcome != Outcome::Fired) return choice.outcome;
+    return fire_and_check<true>(choice.position, choice.date, info);
   }
 
   /// Fires the item at position `p` at `date`, then recomputes the items of the atoms it
@@ -550,16 +455,10 @@ class FlatSteps final : public CompiledSteps {
   std::vector<Index> touched_list_;
   std::vector<Flag> chosen_;  // per port of a broadcast: it offers (its interaction's)
   bool beyond_ = false;       // a recomputed item is beyond this path: the step ends it
-  // Timed steps: per position whether its item is enabled and its constraint; the items of
-  // the step; stochastic mode: the plans per position, the race count, a draw's error.
+  // Timed steps: per position whether its item is enabled and its constraint; the choice.
   std::vector<Flag> enabled_;
   std::vector<Constraint> raw_;
-  std::vector<Listed> items_;  // one per position; the first items_count_ are the step's
-  std::size_t items_count_ = 0;
-  std::span<Listed> listed_items() { return {items_.data(), items_count_}; }
-  std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
-  std::uint64_t generation_ = 1;
-  std::string problem_;
+  FlatTimedChoice timed_choice_;
   std::optional<Start> start_;  // Run::kept_start: what begin() computed from that state
   // Run::checks_kept_state: the bytes the step may write, before it; whether it kept them.
   bool checks_kept_ = false, kept_ = false;

@@ -1,0 +1,181 @@
+// The choice of a timed step on the compiled step path (flat_steps.h), on a timed layout or in
+// stochastic mode: the enabled items cut to the waiting window (as Runtime::compute_items lists
+// them), then the reference race (random_race) or the stochastic race of planned dates
+// (earliest_in_window, dates kept per position as DatePlanner keeps them per item), as
+// Runtime::wait_interval and the Scheduler make them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engines/api/model.h"
+#include "engines/semantics/compiled_steps.h"
+#include "engines/semantics/detail/runtime_shared.h"
+#include "engines/semantics/item_race.h"
+#include "engines/stochastic/date_planner.h"
+#include "engines/stochastic/random_stream.h"
+
+namespace smcbip::engines {
+
+/// A flag per position of the compiled step path. Not std::uint8_t: a store through a
+/// character type may alias anything, so the compiler would reload every table's address
+/// after each.
+enum class FlatFlag : std::uint8_t { Off, On };
+
+class FlatTimedChoice {
+ public:
+  /// The step's outcome; when Fired, the position to fire and its date.
+  struct Choice {
+    CompiledSteps::Outcome outcome = CompiledSteps::Outcome::Deadlock;
+    std::uint32_t position = 0;
+    TimeValue date = 0;
+  };
+  /// Per position whether its item is enabled and its constraint (the step path keeps them),
+  /// and the @stochastic port each fires.
+  struct Items {
+    std::span<const FlatFlag> enabled;
+    std::span<const Constraint> raw;
+    std::span<const std::optional<std::pair<Index, Index>>> stochastic;
+  };
+  /// The run's draws: `planner` (stochastic mode, else null) races planned dates.
+  struct Run {
+    Runtime* runtime = nullptr;
+    RandomStream* random = nullptr;
+    DatePlanner* planner = nullptr;
+    bool asap = false, first_enabled = false;
+  };
+
+  /// A new run over `positions` positions: the race count goes on from the last run's, one
+  /// race skipped, so no plan of that run is seen in the race before this run's first: none is
+  /// kept, and they need no reset.
+  void new_run(std::size_t positions) {
+    if (items_.size() != positions) items_.resize(positions);
+    if (plans_.size() != positions) plans_.assign(positions, DatePlanner::Plan{});
+    ++generation_;
+  }
+
+  /// The step at `now`: Deadlock or Timelock when no item is listed, else Limit when
+  /// `at_limit`, Beyond when a date cannot be drawn, else the item to fire.
+  [[gnu::always_inline]] Choice choose(TimeValue now, bool at_limit, const Items& at,
+                                       const Run& run) {
+    Interval waiting;
+    const std::size_t listed = list(now, at, waiting);
+    if (listed == 0) {
+      return {waiting.right == kPlusInfinity ? CompiledSteps::Outcome::Deadlock
+                                              : CompiledSteps::Outcome::Timelock};
+    }
+    if (at_limit) return {CompiledSteps::Outcome::Limit};
+    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
+    std::optional<std::pair<std::size_t, TimeValue>> choice;
+    if (run.planner == nullptr) {
+      choice = random_race(count_, window, now, run.asap, run.first_enabled, *run.random);
+    } else {
+      try {
+        if (!race(at, run, choice)) return {CompiledSteps::Outcome::Beyond};
+      } catch (const CodeFault&) {
+        return {CompiledSteps::Outcome::Beyond};
+      }
+      if (!choice) return {CompiledSteps::Outcome::Timelock};
+    }
+    return {CompiledSteps::Outcome::Fired, items_[choice->first].position, choice->second};
+  }
+
+ private:
+  /// An item of a timed step: its position and its window cut to the waiting window.
+  struct Listed {
+    std::uint32_t position = 0;
+    Interval window;
+    TimeValue date = 0;  // stochastic mode: its planned date
+  };
+
+  /// Lists the enabled items from `now` on, cut to the waiting window (written to `waiting`);
+  /// how many. One pass lists them and gathers the window; only when an item is not lazy (the
+  /// window may then be cut) does a second pass over the listed ones cut them.
+  [[gnu::always_inline]] std::size_t list(TimeValue now, const Items& at, Interval& waiting) {
+    const Interval from_now = Interval::from(now);
+    waiting = from_now;
+    bool waits = false;
+    // items_ has room for every position (new_run): an item is written in place and kept when
+    // its window is not empty.
+    std::size_t listed = 0;
+    const auto positions = static_cast<std::uint32_t>(at.enabled.size());
+    for (std::uint32_t p = 0; p < positions; ++p) {
+      if (at.enabled[p] == FlatFlag::Off) continue;
+      const Constraint& raw = at.raw[p];
+      if (raw.urgency != bipc::Urgency::Lazy) {
+        narrow(waiting, detail::wait(raw, now));
+        waits = true;
+      }
+      // Copied field by field: an Interval built and copied whole stalled on store forwarding.
+      Listed& item = items_[listed];
+      item.position = p;
+      item.window.left = raw.interval.left;
+      item.window.right = raw.interval.right;
+      item.window.left_open = raw.interval.left_open;
+      item.window.right_open = raw.interval.right_open;
+      narrow(item.window, from_now);
+      listed += item.window.empty() ? 0 : 1;
+    }
+    // Intersections commute: cutting by now and then by the waiting window is cutting by both.
+    if (waits) listed = cut_to(waiting, listed);
+    count_ = listed;
+    return listed;
+  }
+
+  /// Cuts the first `listed` items' windows to `waiting`, keeping the non-empty ones in order;
+  /// how many are kept.
+  std::size_t cut_to(const Interval& waiting, std::size_t listed) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < listed; ++i) {
+      narrow(items_[i].window, waiting);
+      if (items_[i].window.empty()) continue;
+      if (kept != i) items_[kept] = items_[i];
+      ++kept;
+    }
+    return kept;
+  }
+
+  std::span<Listed> listed_items() { return {items_.data(), count_}; }
+
+  /// Scheduler::race over the listed items: DatePlanner::plan's kept or new dates, then the
+  /// earliest in its window, or after replan_within_windows; false when a date cannot be drawn.
+  [[gnu::always_inline]] bool race(const Items& at, const Run& run,
+            std::optional<std::pair<std::size_t, TimeValue>>& choice) {
+    ++generation_;
+    for (Listed& item : listed_items()) {
+      DatePlanner::Plan& plan = plans_[item.position];
+      const auto stochastic = [&] { return at.stochastic[item.position]; };
+      if (!run.planner->renew(*run.runtime, plan, generation_, at.raw[item.position], stochastic,
+                              problem_)) {
+        return false;
+      }
+      item.date = plan.date;
+    }
+    const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
+    const auto date = [&](std::size_t i) { return items_[i].date; };
+    choice = earliest_in_window(count_, window, date, *run.random);
+    if (!choice) {
+      for (Listed& item : listed_items()) {
+        if (at.stochastic[item.position]) continue;
+        item.date = run.planner->draw_timed(at.raw[item.position].urgency, item.window);
+        plans_[item.position].date = item.date;
+      }
+      choice = earliest_in_window(count_, window, date, *run.random);
+    }
+    if (choice) DatePlanner::fired(plans_[items_[choice->first].position]);
+    return true;
+  }
+
+  std::vector<Listed> items_;  // one per position; the first count_ are the step's
+  std::size_t count_ = 0;
+  std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
+  std::uint64_t generation_ = 1;
+  std::string problem_;  // a draw's error (the engines' replay reports it)
+};
+
+}  // namespace smcbip::engines
