@@ -38,9 +38,9 @@ class FlatTimedChoice {
   /// Per position whether its item is enabled and its constraint (the step path keeps them),
   /// and the @stochastic port each fires.
   struct Items {
-    std::span<const FlatFlag> enabled;
-    std::span<const Constraint> raw;
-    std::span<const std::optional<std::pair<Index, Index>>> stochastic;
+    const std::vector<FlatFlag>& enabled;
+    const std::vector<Constraint>& raw;
+    const std::vector<std::optional<std::pair<Index, Index>>>& stochastic;
   };
   /// The run's draws: `planner` (stochastic mode, else null) races planned dates.
   struct Run {
