@@ -147,7 +147,8 @@ class FlatSteps final : public CompiledSteps {
   /// A step on a timed layout or in stochastic mode (FlatTimedChoice).
   Outcome timed_step(bool at_limit, StepInfo& info) {
     const FlatTimedChoice::Choice choice =
-        timed_choice_.choose(state_->now, at_limit, {enabled_, raw_, t_.stochastic},
+        timed_choice_.choose(state_->now, at_limit,
+                             {position_count_, enabled_.data(), raw_.data(), t_.stochastic.data()},
                              {runtime_, random_, planner_, asap_, first_enabled_});
     if (choice.outcome != Outcome::Fired) return choice.outcome;
     return fire_and_check<true>(choice.position, choice.date, info);

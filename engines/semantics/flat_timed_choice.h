@@ -37,10 +37,13 @@ class FlatTimedChoice {
   };
   /// Per position whether its item is enabled and its constraint (the step path keeps them),
   /// and the @stochastic port each fires.
+  /// Pointers, not vectors or spans: values the step keeps in registers, where a vector's
+  /// start would be loaded again after every store to the listed items.
   struct Items {
-    const std::vector<FlatFlag>& enabled;
-    const std::vector<Constraint>& raw;
-    const std::vector<std::optional<std::pair<Index, Index>>>& stochastic;
+    std::uint32_t positions = 0;
+    const FlatFlag* enabled = nullptr;
+    const Constraint* raw = nullptr;
+    const std::optional<std::pair<Index, Index>>* stochastic = nullptr;
   };
   /// The run's draws: `planner` (stochastic mode, else null) races planned dates.
   struct Run {
@@ -103,8 +106,7 @@ class FlatTimedChoice {
     // items_ has room for every position (new_run): an item is written in place and kept when
     // its window is not empty.
     std::size_t listed = 0;
-    const auto positions = static_cast<std::uint32_t>(at.enabled.size());
-    for (std::uint32_t p = 0; p < positions; ++p) {
+    for (std::uint32_t p = 0; p < at.positions; ++p) {
       if (at.enabled[p] == FlatFlag::Off) continue;
       const Constraint& raw = at.raw[p];
       if (raw.urgency != bipc::Urgency::Lazy) {
