@@ -155,9 +155,8 @@ class Simulation {
   std::optional<RunResult> run_compiled(CompiledSteps& steps) {
     DatePlanner* planner = shared_.stochastic ? &scheduler_.planner() : nullptr;
     const bool absorbing_checks = shared_.absorbing_checks;
-    if (!steps.begin({runtime_, scheduler_.random(), planner, options_.asap,
-                      options_.first_enabled, scheduler_.started_from_kept_state(),
-                      absorbing_checks})) {
+    if (!steps.begin({runtime_, scheduler_.random(), planner, options_.asap, options_.first_enabled,
+                      scheduler_.started_from_kept_state(), absorbing_checks})) {
       return std::nullopt;
     }
     StepInfo info;

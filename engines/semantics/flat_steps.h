@@ -8,8 +8,8 @@
 // (the listed connectors in listing order, then the internal ports). On an untimed layout they
 // are kept in EnabledPositions (the order of ItemIndex's counts) and chosen by SharedWindowChooser;
 // on a timed one (or in stochastic mode) each has its constraint, and FlatTimedChoice chooses
-// among them as the Scheduler does (flat_timed_choice.h). The firing is that of InteractionExecution::execute_in_sequence
-// and AtomFiring::fire_port.
+// among them as the Scheduler does (flat_timed_choice.h). The firing is that of
+// InteractionExecution::execute_in_sequence and AtomFiring::fire_port.
 // Whatever the Runtime would report as an error (1-safety, non-determinism, code faults) ends
 // the path as Beyond: the engines then replay the run, which tells the error as they do.
 #pragma once
@@ -313,8 +313,8 @@ class FlatSteps final : public CompiledSteps {
     }
   }
 
-  /// InteractionExecution::execute_in_sequence for a rendezvous: `down` over the value, its data written back, then
-  /// the ports in parameter order.
+  /// InteractionExecution::execute_in_sequence for a rendezvous: `down` over the value, its data
+  /// written back, then the ports in parameter order.
   bool fire_connector(const FlatTables::Connector& c) {
     if (c.has_down) {
       const PortContext context{this, &c};

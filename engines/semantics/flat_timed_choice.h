@@ -70,7 +70,7 @@ class FlatTimedChoice {
     const std::size_t listed = list(now, at, waiting);
     if (listed == 0) {
       return {waiting.right == kPlusInfinity ? CompiledSteps::Outcome::Deadlock
-                                              : CompiledSteps::Outcome::Timelock};
+                                             : CompiledSteps::Outcome::Timelock};
     }
     if (at_limit) return {CompiledSteps::Outcome::Limit};
     const auto window = [&](std::size_t i) -> const Interval& { return items_[i].window; };
@@ -147,7 +147,7 @@ class FlatTimedChoice {
   /// Scheduler::race over the listed items: DatePlanner::plan's kept or new dates, then the
   /// earliest in its window, or after replan_within_windows; false when a date cannot be drawn.
   [[gnu::always_inline]] bool race(const Items& at, const Run& run,
-            std::optional<std::pair<std::size_t, TimeValue>>& choice) {
+                                   std::optional<std::pair<std::size_t, TimeValue>>& choice) {
     ++generation_;
     for (Listed& item : listed_items()) {
       DatePlanner::Plan& plan = plans_[item.position];

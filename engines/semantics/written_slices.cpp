@@ -59,9 +59,8 @@ WrittenSlices::WrittenSlices(const FlatTables& t) {
 }
 
 const unsigned char* WrittenSlices::bytes_of(const RunState& state, const Slice& slice) {
-  const unsigned char* base = slice.data
-                                  ? reinterpret_cast<const unsigned char*>(state.data.data())
-                                  : state.marking.data();
+  const unsigned char* base =
+      slice.data ? reinterpret_cast<const unsigned char*>(state.data.data()) : state.marking.data();
   return base + slice.first;
 }
 

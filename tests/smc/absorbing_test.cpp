@@ -50,9 +50,9 @@ TEST(Absorbing, ARendezvousThatChangesNothingEndsTheRunOnEveryEngine) {
   // the run; the fourth keeps everything, and from there each run ends with its verdict.
   for (const auto engine : {engines::EngineKind::Reference, engines::EngineKind::Optimised,
                             engines::EngineKind::Multithread}) {
-    const auto results = check_test_model(
-        "rendezvous_loop.bip", "P=? [ F counter.n == 3 ]\nP=? [ F counter.n == 4 ]\n",
-        short_runs(engine));
+    const auto results = check_test_model("rendezvous_loop.bip",
+                                          "P=? [ F counter.n == 3 ]\nP=? [ F counter.n == 4 ]\n",
+                                          short_runs(engine));
     ASSERT_EQ(results.size(), 2u);
     for (const QueryResult& r : results) {
       EXPECT_TRUE(r.error.empty()) << r.error;
