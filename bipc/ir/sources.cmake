@@ -5,6 +5,7 @@ list(APPEND BIPC_SOURCES
   ir/clock_guard.cpp
   ir/data_guard.cpp
   ir/simple_action.cpp
+  ir/state_change.cpp
   ir/ir_json.cpp
   ir/ir_text.cpp
   ir/ir_dot.cpp

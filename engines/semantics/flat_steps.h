@@ -204,9 +204,10 @@ class FlatSteps final : public CompiledSteps {
   template <bool Timed>
   Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
     // One call of fire(): inlined here, as it was into the step.
-    if (checks_kept_) written_->remember(*state_, p);
+    const bool compares = checks_kept_ && !written_->surely_changed(p, offers_.data());
+    if (compares) written_->remember(*state_, p);
     const Outcome outcome = fire<Timed>(p, date, info);
-    if (checks_kept_) kept_ = written_->kept(*state_, p);
+    kept_ = compares && written_->kept(*state_, p);
     return outcome;
   }
 

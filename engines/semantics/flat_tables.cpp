@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "bipc/ir/state_change.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -105,6 +107,12 @@ FlatTables::Connector connector_entry(const System& system, const Layout& layout
     }
   }
   entry.ports_end = static_cast<std::uint32_t>(tables.ports.size());
+  std::vector<Index> atoms;
+  for (std::uint32_t i = entry.first_port; i < entry.ports_end; ++i) {
+    atoms.push_back(tables.ports[i].atom);
+  }
+  std::sort(atoms.begin(), atoms.end());
+  entry.distinct_atoms = std::adjacent_find(atoms.begin(), atoms.end()) == atoms.end();
   entry.data = static_cast<std::uint32_t>(layout.connector_data[k]);
   entry.data_size = static_cast<std::uint32_t>(type.data.size());
   entry.value_data = tables.value_data_size;
@@ -201,12 +209,28 @@ void index_stochastic_ports(const System& system, FlatTables& tables) {
   }
 }
 
+/// Per atom type, the first of its transitions' entries in `changing`, which it fills.
+std::vector<std::uint32_t> index_changing_transitions(const System& system, FlatTables& tables) {
+  std::vector<std::uint32_t> first;
+  for (const AtomType& type : system.atom_types) {
+    first.push_back(static_cast<std::uint32_t>(tables.changing.size()));
+    for (const bipc::ir::Transition& transition : type.transitions) {
+      const bool changes = bipc::ir::always_changes_state(transition, false);
+      const bool after_down = bipc::ir::always_changes_state(transition, true);
+      tables.changing.push_back(static_cast<std::uint8_t>(
+          (changes ? FlatTables::kChanges : 0) | (after_down ? FlatTables::kChangesAfterDown : 0)));
+    }
+  }
+  return first;
+}
+
 }  // namespace
 
 std::optional<FlatTables> flat_tables(const System& system, const Layout& layout,
                                       const ModelCode& code) {
   if (!covers_system(system, layout, code)) return std::nullopt;
   FlatTables tables;
+  const std::vector<std::uint32_t> first_transition = index_changing_transitions(system, tables);
   for (Index a = 0; a < system.atoms.size(); ++a) {
     const Index t = system.atoms[a].type;
     FlatTables::Atom atom;
@@ -221,6 +245,7 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
     atom.port_count = static_cast<std::uint32_t>(system.atom_types[t].ports.size());
     atom.has_internal_transitions = !layout.internal_transitions[t].empty();
     atom.has_clocks = !system.atom_types[t].clocks.empty();
+    atom.first_transition = first_transition[t];
     tables.offer_count += atom.port_count;
     tables.atoms.push_back(atom);
   }

@@ -21,6 +21,7 @@ struct FlatTables {
     std::uint32_t first_offer = 0;  // into the offers, one per port of its type
     std::uint32_t port_count = 0;   // the ports of its type
     std::uint32_t first_neighbour = 0, neighbours_end = 0;  // into `neighbours`
+    std::uint32_t first_transition = 0;  // into `changing`, one per transition of its type
     bool has_internal_transitions = false;
     bool has_clocks = false;
   };
@@ -48,7 +49,8 @@ struct FlatTables {
     /// A broadcast (some ports are triggers; untimed layouts only): its one executable
     /// interaction under maximal progress is every offering port, when a trigger offers.
     bool triggered = false;
-    bool enumerated = false;  // Layout::enumerated
+    bool enumerated = false;     // Layout::enumerated
+    bool distinct_atoms = true;  // its ports bind atom ports of different atoms
   };
   /// An internal port item.
   using Internal = AtomPort;
@@ -65,6 +67,11 @@ struct FlatTables {
   std::vector<std::uint32_t> affected, first_affected;
   /// Per position: the @stochastic atom port its item fires, if any (DatePlanner's choice).
   std::vector<std::optional<std::pair<Index, Index>>> stochastic;
+  /// Per transition of each atom type (Atom::first_transition): kChanges when firing it always
+  /// changes its atom's places or data, kChangesAfterDown when it does even after a connector's
+  /// `down` wrote to that data (bipc/ir/state_change.h).
+  static constexpr std::uint8_t kChanges = 1, kChangesAfterDown = 2;
+  std::vector<std::uint8_t> changing;
   std::uint32_t offer_count = 0, value_data_size = 0;
   bool has_triggered = false;  // some connector is triggered
 

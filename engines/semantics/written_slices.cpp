@@ -26,11 +26,13 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> merged(
 
 }  // namespace
 
-WrittenSlices::WrittenSlices(const FlatTables& t) {
+WrittenSlices::WrittenSlices(const FlatTables& t) : changing_(t.changing) {
   constexpr auto kVal = static_cast<std::uint32_t>(sizeof(Val));
   std::size_t largest = 0;
   first_slice_.push_back(0);
+  first_changer_.push_back(0);
   for (std::uint32_t p = 0; p < t.positions(); ++p) {
+    add_changers(t, p);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> data, places;
     const auto add_atom = [&](const FlatTables::Atom& atom) {
       data.emplace_back(atom.data * kVal, atom.data_size * kVal);
@@ -56,6 +58,21 @@ WrittenSlices::WrittenSlices(const FlatTables& t) {
     largest = std::max(largest, bytes);
   }
   before_.resize(largest);
+}
+
+void WrittenSlices::add_changers(const FlatTables& t, std::uint32_t p) {
+  const auto add = [&](const FlatTables::AtomPort& port, std::uint8_t mask) {
+    if (!port.of.has_internal_transitions) {
+      changers_.push_back({port.offer, port.of.first_transition, mask});
+    }
+  };
+  if (p >= t.connectors.size()) {
+    add(t.internal[p - t.connectors.size()], FlatTables::kChanges);
+  } else if (const FlatTables::Connector& c = t.connectors[p]; c.distinct_atoms && !c.triggered) {
+    const std::uint8_t mask = c.has_down ? FlatTables::kChangesAfterDown : FlatTables::kChanges;
+    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) add(t.ports[i], mask);
+  }
+  first_changer_.push_back(static_cast<std::uint32_t>(changers_.size()));
 }
 
 const unsigned char* WrittenSlices::bytes_of(const RunState& state, const Slice& slice) {
