@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "engines/stochastic/clock_dates.h"
-
 namespace smcbip::engines {
 
 TimeValue uniform_date(const Interval& window, RandomStream& random) {
@@ -174,19 +172,6 @@ bool DatePlanner::plan(Runtime& runtime, std::vector<TimeValue>& dates, std::str
   return true;
 }
 
-bool DatePlanner::draw_date(Runtime& runtime,
-                            const std::optional<std::pair<Index, Index>>& stochastic,
-                            const Constraint& offered, TimeValue& date, std::string& error) {
-  // The item's own window from now: the dates other items' deadlines cut off stay possible, as
-  // the race decides whether the item gets there.
-  const Interval window = offered.interval.intersect(Interval::from(runtime.state().now));
-  if (stochastic) {
-    return draw_stochastic(runtime, stochastic->first, stochastic->second, window, date, error);
-  }
-  date = draw_timed(offered.urgency, window);
-  return true;
-}
-
 std::optional<std::pair<Index, Index>> DatePlanner::stochastic_port(const Runtime& runtime,
                                                                     const Item& item) {
   if (item.kind != Item::Kind::Interaction) {
@@ -223,12 +208,8 @@ TimeValue DatePlanner::draw_timed(bipc::Urgency urgency, const Interval& window)
   return after(first, std::floor(delay));
 }
 
-bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
-                                  TimeValue& date, std::string& error) {
-  const std::size_t flat = first_port_[atom] + port;
-  if (std::optional<Fixed>& fixed = fixed_distributions_[flat]) {
-    return draw_from(runtime, atom, port, fixed->distribution, &*fixed, window, date, error);
-  }
+bool DatePlanner::draw_made(Runtime& runtime, Index atom, Index port, const Interval& window,
+                            TimeValue& date, std::string& error) {
   runtime.stochastic_params(atom, port, params_);
   auto made = make_distribution(annotation_of(atom, port), params_);
   if (auto* message = std::get_if<std::string>(&made)) {
@@ -239,31 +220,15 @@ bool DatePlanner::draw_stochastic(Runtime& runtime, Index atom, Index port, cons
                    error);
 }
 
-bool DatePlanner::draw_from(Runtime& runtime, Index atom, Index port,
-                            const DateDistribution& distribution, Fixed* fixed,
-                            const Interval& window, TimeValue& date, std::string& error) {
-  // The date is drawn on the clock's scale, conditioned on lying in the port's window: a
-  // clock that has already advanced truncates the distribution at its value. The clock is read
-  // from the state here, not through Runtime calls: a draw is a large part of a Markovian
-  // model's step.
-  const std::size_t slot =
-      runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
-  const ClockState& clock = runtime.state().clocks[slot];
-  const TimeValue unit = runtime.layout().clock_units[slot];
-  const double lower = clock_value_at(clock, unit, window.first());
-  double sample = 0.0;
-  if (!distribution.sample_above(
-          lower, random_, [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); },
-          sample)) {
-    const auto& type = system_.atom_types[system_.atoms[atom].type];
-    error = "missed support: " + port_name(runtime, atom, port) + " draws from " +
-            distribution.describe() + " but its clock " +
-            type.clocks[annotation_of(atom, port).clock].name + " is already at " +
-            std::to_string(lower) + ", beyond every date of the distribution";
-    return false;
-  }
-  date = std::max(window.first(), clock_reaches(clock, unit, runtime.state().now, sample));
-  return true;
+bool DatePlanner::missed_support(const Runtime& runtime, Index atom, Index port,
+                                 const DateDistribution& distribution, double lower,
+                                 std::string& error) const {
+  const auto& type = system_.atom_types[system_.atoms[atom].type];
+  error = "missed support: " + port_name(runtime, atom, port) + " draws from " +
+          distribution.describe() + " but its clock " +
+          type.clocks[annotation_of(atom, port).clock].name + " is already at " +
+          std::to_string(lower) + ", beyond every date of the distribution";
+  return false;
 }
 
 const bipc::ir::Stochastic& DatePlanner::annotation_of(Index atom, Index port) const {

@@ -18,6 +18,7 @@
 
 #include "bipc/ir/ir.h"
 #include "engines/semantics/runtime.h"
+#include "engines/stochastic/clock_dates.h"
 #include "engines/stochastic/distributions.h"
 #include "engines/stochastic/random_stream.h"
 
@@ -89,8 +90,23 @@ class DatePlanner {
   /// A new date for an item offered `offered`, as plan() draws one: from the @stochastic
   /// annotation of the atom port `stochastic` when the item fires one, from its urgency and
   /// window otherwise. False with `error` set as plan().
+  /// Inline down to the draw from a port's fixed distribution: the draw of every step of a
+  /// Markovian model, whose calls would otherwise cost a third of it.
   bool draw_date(Runtime& runtime, const std::optional<std::pair<Index, Index>>& stochastic,
-                 const Constraint& offered, TimeValue& date, std::string& error);
+                 const Constraint& offered, TimeValue& date, std::string& error) {
+    // The item's own window from now: the dates other items' deadlines cut off stay possible,
+    // as the race decides whether the item gets there.
+    const Interval window = offered.interval.intersect(Interval::from(runtime.state().now));
+    if (!stochastic) {
+      date = draw_timed(offered.urgency, window);
+      return true;
+    }
+    const auto [atom, port] = *stochastic;
+    if (std::optional<Fixed>& fixed = fixed_distributions_[first_port_[atom] + port]) {
+      return draw_from(runtime, atom, port, fixed->distribution, &*fixed, window, date, error);
+    }
+    return draw_made(runtime, atom, port, window, date, error);
+  }
   /// A date for an item without a @stochastic port: its window's first date when eager, else
   /// uniform in a bounded window, exponential after an unbounded one's first date.
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
@@ -130,12 +146,34 @@ class DatePlanner {
   void index_connectors(const Runtime& runtime);
   /// The plan of the item (created empty when new).
   Plan& plan_of(const Runtime& runtime, const Item& item);
-  bool draw_stochastic(Runtime& runtime, Index atom, Index port, const Interval& window,
-                       TimeValue& date, std::string& error);
-  /// draw_stochastic's date from `distribution`, whose masses `fixed` keeps when it is the
-  /// port's fixed one (null for a distribution made for this draw).
+  /// draw_date's date from a distribution made for this draw: the port's parameters are not
+  /// all numbers, or not valid ones (then false with `error` set).
+  bool draw_made(Runtime& runtime, Index atom, Index port, const Interval& window, TimeValue& date,
+                 std::string& error);
+  /// draw_date's date from `distribution`, whose masses `fixed` keeps when it is the port's
+  /// fixed one (null for a distribution made for this draw). The date is drawn on the clock's
+  /// scale, conditioned on lying in the port's window: a clock that has already advanced
+  /// truncates the distribution at its value. The clock is read from the state here, not
+  /// through Runtime calls.
   bool draw_from(Runtime& runtime, Index atom, Index port, const DateDistribution& distribution,
-                 Fixed* fixed, const Interval& window, TimeValue& date, std::string& error);
+                 Fixed* fixed, const Interval& window, TimeValue& date, std::string& error) {
+    const std::size_t slot =
+        runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
+    const ClockState& clock = runtime.state().clocks[slot];
+    const TimeValue unit = runtime.layout().clock_units[slot];
+    const double lower = clock_value_at(clock, unit, window.first());
+    double sample = 0.0;
+    if (!distribution.sample_above(
+            lower, random_,
+            [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); }, sample)) {
+      return missed_support(runtime, atom, port, distribution, lower, error);
+    }
+    date = std::max(window.first(), clock_reaches(clock, unit, runtime.state().now, sample));
+    return true;
+  }
+  /// draw_from's error when the clock is beyond every date of the distribution: false.
+  bool missed_support(const Runtime& runtime, Index atom, Index port,
+                      const DateDistribution& distribution, double lower, std::string& error) const;
   /// The @stochastic annotation of an atom port that has one.
   const bipc::ir::Stochastic& annotation_of(Index atom, Index port) const;
   /// The port's name as error messages give it: "ROOT.a.p".
