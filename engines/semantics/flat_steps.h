@@ -73,7 +73,7 @@ class FlatSteps final : public CompiledSteps {
     checks_kept_ = run.checks_kept_state;
     if (checks_kept_ && !written_) written_.emplace(t_);
     timed_choice_.new_run(t_.positions());
-    if (run.kept_start && start_) {
+    if (run.kept_start && start_ && start_->timed == timed_) {
       restore(*start_);
       return true;
     }
@@ -108,20 +108,26 @@ class FlatSteps final : public CompiledSteps {
     std::vector<Flag> eager, enabled, chosen;
     std::ptrdiff_t eager_count = 0;
     std::vector<Constraint> raw;
+    bool timed = false;  // the mode it was computed in, whose arrays restore() copies
   };
   Start save() const {
-    return {offers_, value_data_, index_, eager_, enabled_, chosen_, eager_count_, raw_};
+    return {offers_, value_data_, index_, eager_, enabled_, chosen_, eager_count_, raw_, timed_};
   }
-  // Assigned in place: the vectors keep their storage.
+  // Assigned in place: the vectors keep their storage. Only what the run's mode reads: the
+  // timed step's items on a timed layout, the untimed step's otherwise (a run of a few steps
+  // would spend a tenth of its time copying the others).
   void restore(const Start& start) {
     offers_ = start.offers;
     value_data_ = start.value_data;
-    index_ = start.index;
-    eager_ = start.eager;
-    enabled_ = start.enabled;
-    chosen_ = start.chosen;
-    eager_count_ = start.eager_count;
-    raw_ = start.raw;
+    if (timed_) {
+      enabled_ = start.enabled;
+      raw_ = start.raw;
+    } else {
+      index_ = start.index;
+      eager_ = start.eager;
+      eager_count_ = start.eager_count;
+      chosen_ = start.chosen;
+    }
     beyond_ = false;
   }
 
