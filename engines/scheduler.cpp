@@ -100,7 +100,7 @@ bool Scheduler::start() {
 bool Scheduler::start_state() {
   if (parts_->initial_state) {
     // Assigned in place: the state's buffers keep their size from run to run.
-    runtime_.state() = *parts_->initial_state;
+    assign_state(runtime_.state(), *parts_->initial_state);
     return true;
   }
   if (!start()) return false;
@@ -130,18 +130,6 @@ CompiledSteps* Scheduler::compiled_steps() {
   }
   return parts_->compiled_steps.get();
 }
-
-namespace {
-
-/// `to` made a copy of `from`, whose size stays the same from step to step: copied in place,
-/// without assign()'s reallocation path, a noticeable part of a short step.
-template <class T>
-void copy_over(const std::vector<T>& from, std::vector<T>& to) {
-  if (to.size() != from.size()) to.resize(from.size());
-  std::copy(from.begin(), from.end(), to.begin());
-}
-
-}  // namespace
 
 void Scheduler::remember_discrete_state() {
   const RunState& state = runtime_.state();

@@ -117,16 +117,16 @@ class FlatSteps final : public CompiledSteps {
   // timed step's items on a timed layout, the untimed step's otherwise (a run of a few steps
   // would spend a tenth of its time copying the others).
   void restore(const Start& start) {
-    offers_ = start.offers;
-    value_data_ = start.value_data;
+    copy_over(start.offers, offers_);
+    copy_over(start.value_data, value_data_);
     if (timed_) {
-      enabled_ = start.enabled;
-      raw_ = start.raw;
+      copy_over(start.enabled, enabled_);
+      copy_over(start.raw, raw_);
     } else {
       index_ = start.index;
-      eager_ = start.eager;
+      copy_over(start.eager, eager_);
       eager_count_ = start.eager_count;
-      chosen_ = start.chosen;
+      copy_over(start.chosen, chosen_);
     }
     beyond_ = false;
   }

@@ -12,6 +12,7 @@
 #include "bipc/ir/ir.h"
 #include "engines/api/model.h"
 #include "engines/interpreter/code_eval.h"
+#include "engines/semantics/copy_over.h"
 #include "engines/semantics/layout.h"
 
 namespace smcbip::engines {
@@ -25,6 +26,18 @@ struct RunState {
   std::vector<std::uint8_t> resume_pending;  // per atom
   std::vector<Interval> resume_interval;     // per atom, absolute
 };
+
+/// `to = from`, in place (copy_over): a statistical check restores the start state every run.
+inline void assign_state(RunState& to, const RunState& from) {
+  // A field added to RunState must be copied here too.
+  static_assert(sizeof(RunState) == sizeof(TimeValue) + 5 * sizeof(std::vector<Val>));
+  to.now = from.now;
+  copy_over(from.data, to.data);
+  copy_over(from.marking, to.marking);
+  copy_over(from.clocks, to.clocks);
+  copy_over(from.resume_pending, to.resume_pending);
+  copy_over(from.resume_interval, to.resume_interval);
+}
 
 /// One value a connector port parameter may take: an atom port's offer or one enabled
 /// interaction of a sub-connector (with that connector's data after its `up`).
