@@ -70,8 +70,9 @@ class DatePlanner {
   /// a caller that keeps its own (the compiled step path) does too. False with `error` set as
   /// plan().
   template <class StochasticPort>
-  bool renew(Runtime& runtime, Plan& plan, std::uint64_t race, const Constraint& offered,
-             StochasticPort stochastic_port, std::string& error) {
+  [[gnu::always_inline]] bool renew(Runtime& runtime, Plan& plan, std::uint64_t race,
+                                    const Constraint& offered, StochasticPort stochastic_port,
+                                    std::string& error) {
     const bool kept = plan.seen + 1 == race && plan.offered.urgency == offered.urgency &&
                       plan.offered.interval == offered.interval;
     if (!kept) {
@@ -92,8 +93,10 @@ class DatePlanner {
   /// window otherwise. False with `error` set as plan().
   /// Inline down to the draw from a port's fixed distribution: the draw of every step of a
   /// Markovian model, whose calls would otherwise cost a third of it.
-  bool draw_date(Runtime& runtime, const std::optional<std::pair<Index, Index>>& stochastic,
-                 const Constraint& offered, TimeValue& date, std::string& error) {
+  [[gnu::always_inline]] bool draw_date(Runtime& runtime,
+                                        const std::optional<std::pair<Index, Index>>& stochastic,
+                                        const Constraint& offered, TimeValue& date,
+                                        std::string& error) {
     // The item's own window from now: the dates other items' deadlines cut off stay possible,
     // as the race decides whether the item gets there.
     const Interval window = offered.interval.intersect(Interval::from(runtime.state().now));
@@ -155,8 +158,10 @@ class DatePlanner {
   /// scale, conditioned on lying in the port's window: a clock that has already advanced
   /// truncates the distribution at its value. The clock is read from the state here, not
   /// through Runtime calls.
-  bool draw_from(Runtime& runtime, Index atom, Index port, const DateDistribution& distribution,
-                 Fixed* fixed, const Interval& window, TimeValue& date, std::string& error) {
+  [[gnu::always_inline]] bool draw_from(Runtime& runtime, Index atom, Index port,
+                                        const DateDistribution& distribution, Fixed* fixed,
+                                        const Interval& window, TimeValue& date,
+                                        std::string& error) {
     const std::size_t slot =
         runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
     const ClockState& clock = runtime.state().clocks[slot];
