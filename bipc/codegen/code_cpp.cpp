@@ -112,6 +112,20 @@ Depths depths_of(const ir::System& system, const ir::Code& code) {
   return d;
 }
 
+/// The statement of a Call at stack depth `d`: its result replaces its arguments.
+std::string call_statement(const ir::System& system, const Instr& in, int d) {
+  const int first = d - static_cast<int>(in.arg);
+  std::string text = "{ const se::Val r = ops::call_extern(c.system, c.functions, c.call, " +
+                     std::to_string(in.index) + ", " + std::to_string(in.arg) + ", s + " +
+                     std::to_string(d) + ", " + site_literal(in.site) + ");";
+  if (system.functions.at(in.index).result) {
+    text += " s[" + std::to_string(first) + "] = r;";
+  } else {
+    text += " (void)r;";
+  }
+  return text + " }";
+}
+
 /// The statement of one instruction at stack depth `d`.
 std::string statement(const ir::System& system, const Instr& in, int d) {
   const std::string top = "s[" + std::to_string(d - 1) + "]";
@@ -154,18 +168,8 @@ std::string statement(const ir::System& system, const Instr& in, int d) {
       return top + " = se::make_int(~" + top + ".i);";
     case Op::IntToFloat:
       return top + " = se::make_float(static_cast<double>(" + top + ".i));";
-    case Op::Call: {
-      const int first = d - static_cast<int>(in.arg);
-      std::string text = "{ const se::Val r = ops::call_extern(c.system, c.functions, c.call, " +
-                         std::to_string(in.index) + ", " + std::to_string(in.arg) + ", s + " +
-                         std::to_string(d) + ", " + site_literal(in.site) + ");";
-      if (system.functions.at(in.index).result) {
-        text += " s[" + std::to_string(first) + "] = r;";
-      } else {
-        text += " (void)r;";
-      }
-      return text + " }";
-    }
+    case Op::Call:
+      return call_statement(system, in, d);
     case Op::Pop:
       return ";";
     case Op::Jump:

@@ -1,22 +1,11 @@
-// What the stochastic date planner asks of a running atom: clock values, the date a clock
-// reaches a value, and the evaluated parameters of a port's @stochastic annotation.
+// What the stochastic date planner asks of a running atom: the evaluated parameters of a port's
+// @stochastic annotation.
 #include <cmath>
 #include <optional>
 
 #include "engines/semantics/runtime.h"
-#include "engines/stochastic/clock_dates.h"
 
 namespace smcbip::engines {
-
-double Runtime::clock_value(Index atom, Index clock, TimeValue at) const {
-  const std::size_t slot = layout_.atom_clocks[atom] + clock;
-  return CodeEvaluator::clock_value(state_.clocks[slot], layout_.clock_units[slot], at);
-}
-
-TimeValue Runtime::clock_reaches(Index atom, Index clock, double value) const {
-  const std::size_t slot = layout_.atom_clocks[atom] + clock;
-  return engines::clock_reaches(state_.clocks[slot], layout_.clock_units[slot], state_.now, value);
-}
 
 std::optional<double> number_param(const bipc::ir::Code& code) {
   using bipc::ir::Op;

@@ -56,15 +56,15 @@ ModelError fault_error(const bipc::ir::System& system, const CodeFault& fault) {
           known ? source_position(system, system.sites[fault.site]) : std::string()};
 }
 
-bool Runtime::fail(int code, std::string message) {
-  error_ = {code, std::move(message), {}};
+namespace {
+
+/// Records `error` in `to` and answers false, as the runtime's calls do when they fail.
+bool failed(ModelError& to, ModelError error) {
+  to = std::move(error);
   return false;
 }
 
-bool Runtime::fail(const CodeFault& fault) {
-  error_ = fault_error(system_, fault);
-  return false;
-}
+}  // namespace
 
 bool Runtime::initialize() {
   cache_.invalidate_all();
@@ -94,7 +94,7 @@ bool Runtime::initialize() {
       if (!atoms_.start(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(fault);
+    return failed(error_, fault_error(system_, fault));
   }
   return priorities_.check_cycles();
 }
@@ -110,10 +110,10 @@ bool Runtime::compute_items() {
     connectors_.compute(full);
   } catch (const CodeFault& fault) {
     cache_.invalidate_all();
-    return fail(fault);
+    return failed(error_, fault_error(system_, fault));
   } catch (const UnsupportedRun& unsupported) {
     cache_.invalidate_all();
-    return fail(kInputError, unsupported.message);
+    return failed(error_, {kInputError, unsupported.message, {}});
   }
   cache_.end();
   extern_ports_.refresh();
@@ -165,7 +165,7 @@ bool Runtime::restore(const RunState& state) {
       if (!state_.resume_pending[a] && !atoms_.update(a)) return false;
     }
   } catch (const CodeFault& fault) {
-    return fail(fault);
+    return failed(error_, fault_error(system_, fault));
   }
   return true;
 }
@@ -180,7 +180,7 @@ bool Runtime::execute(const Item& item, TimeValue at) {
     }
     return atoms_.fire_port(item.atom, item.port);
   } catch (const CodeFault& fault) {
-    return fail(fault);
+    return failed(error_, fault_error(system_, fault));
   }
 }
 
@@ -196,7 +196,7 @@ bool Runtime::write_data(Index atom, Index slot, Val value) {
   try {
     return atoms_.settle(atom);
   } catch (const CodeFault& fault) {
-    return fail(fault);
+    return failed(error_, fault_error(system_, fault));
   }
 }
 

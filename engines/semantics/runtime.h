@@ -54,8 +54,6 @@ class Runtime {
   bool resume_atoms(TimeValue now);
   /// The pending resume windows intersected (all dates when none is pending).
   Interval resume_window() const;
-  /// A value as the trace prints it (strings by their text).
-  std::string format_value(Val v, bipc::ir::ValueKind kind) const;
 
   /// The enabled items computed by the last compute_items, valid until the next execute. The
   /// optimised scheduler lists them only when asked (see item()).
@@ -77,6 +75,8 @@ class Runtime {
   const RunState& state() const { return state_; }
   const Layout& layout() const { return layout_; }
   const bipc::ir::System& system() const { return system_; }
+  /// The texts of the run's string values.
+  const StringPool& strings() const { return strings_; }
 
   /// The earliest date at which a pending extern event that its port cannot take arrives.
   std::optional<TimeValue> next_unexpected_arrival() const {
@@ -96,23 +96,13 @@ class Runtime {
   bool write_data(Index atom, Index slot, Val value);
   /// Appends the atom ports (atom, port) an item fires to `out`, in execution order.
   void append_atom_ports(const Item& item, std::vector<std::pair<Index, Index>>& out) const;
-  /// The value of clock `clock` of `atom` at date `at`, in the clock's unit.
-  double clock_value(Index atom, Index clock, TimeValue at) const;
-  /// The first date from `now` at which that clock reaches `value` (kPlusInfinity if never).
-  TimeValue clock_reaches(Index atom, Index clock, double value) const;
   /// The parameters of the @stochastic annotation of `atom`'s `port`, evaluated now, in `out`
   /// (a buffer the caller reuses).
   void stochastic_params(Index atom, Index port, std::vector<double>& out);
-  /// `holder.port(d=1;)` entries of an interaction, as the trace prints them.
-  std::string format_ports(const InteractionValue& value) const;
   /// The violated deadlines at `now` (real time), as trace lines without the prefix.
   std::vector<std::string> late_constraints(TimeValue now) const;
 
  private:
-  bool fail(int code, std::string message);
-  /// A fault of the model's code, at the source location of its instruction.
-  bool fail(const CodeFault& fault);
-
   const bipc::ir::System& system_;
   const Layout& layout_;
   StringPool& strings_;
@@ -131,6 +121,11 @@ class Runtime {
   CompoundPriorities priorities_;
   InteractionExecution execution_;
 };
+
+/// A value as the trace prints it (strings by their text in `strings`).
+std::string format_value(const StringPool& strings, Val v, bipc::ir::ValueKind kind);
+/// `holder.port(d=1;)` entries of an interaction of `runtime`'s state, as the trace prints them.
+std::string format_ports(const Runtime& runtime, const InteractionValue& value);
 
 /// The value of a @stochastic parameter written as a number (the usual case), which needs no
 /// frame; nullopt for any other expression.

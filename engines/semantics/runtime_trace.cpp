@@ -13,8 +13,9 @@ using bipc::ir::AtomType;
 using bipc::ir::kNone;
 using detail::wait;
 
-std::string Runtime::format_ports(const InteractionValue& value) const {
-  const bipc::ir::ConnectorInstance& connector = system_.connectors[value.connector];
+std::string format_ports(const Runtime& runtime, const InteractionValue& value) {
+  const bipc::ir::System& system = runtime.system();
+  const bipc::ir::ConnectorInstance& connector = system.connectors[value.connector];
   std::string text;
   for (const PortValue& pv : value.choice) {
     if (!text.empty()) text += ' ';
@@ -22,20 +23,21 @@ std::string Runtime::format_ports(const InteractionValue& value) const {
     const bipc::ir::PortType* port_type = nullptr;
     std::vector<Val> values;
     if (pv.from_atom) {
-      const AtomType& type = system_.atom_types[system_.atoms[pv.atom].type];
+      const AtomType& type = system.atom_types[system.atoms[pv.atom].type];
       const bipc::ir::Port& port = type.ports[pv.port];
-      port_type = &system_.port_types[port.type];
-      for (Index slot : port.data) values.push_back(state_.data[layout_.atom_data[pv.atom] + slot]);
+      port_type = &system.port_types[port.type];
+      for (Index slot : port.data)
+        values.push_back(runtime.state().data[runtime.layout().atom_data[pv.atom] + slot]);
     } else {
-      const InteractionValue& sub = connectors_.values()[pv.sub];
-      const auto& type = system_.connector_types[system_.connectors[sub.connector].type];
-      if (type.export_type != kNone) port_type = &system_.port_types[type.export_type];
+      const InteractionValue& sub = runtime.values()[pv.sub];
+      const auto& type = system.connector_types[system.connectors[sub.connector].type];
+      if (type.export_type != kNone) port_type = &system.port_types[type.export_type];
       for (Index slot : type.export_data) values.push_back(sub.data[slot]);
     }
     if (port_type) {
       for (std::size_t p = 0; p < port_type->params.size() && p < values.size(); ++p) {
         text += port_type->params[p].first + "=" +
-                format_value(values[p], port_type->params[p].second.kind) + ";";
+                format_value(runtime.strings(), values[p], port_type->params[p].second.kind) + ";";
       }
     }
     text += ")";
@@ -43,7 +45,7 @@ std::string Runtime::format_ports(const InteractionValue& value) const {
   return text;
 }
 
-std::string Runtime::format_value(Val v, bipc::ir::ValueKind kind) const {
+std::string format_value(const StringPool& strings, Val v, bipc::ir::ValueKind kind) {
   switch (kind) {
     case bipc::ir::ValueKind::Bool:
       return v.b ? "true" : "false";
@@ -53,7 +55,7 @@ std::string Runtime::format_value(Val v, bipc::ir::ValueKind kind) const {
       return s.str();
     }
     case bipc::ir::ValueKind::String:
-      return strings_.text(v.s);
+      return strings.text(v.s);
     default:
       return std::to_string(v.i);
   }
@@ -69,7 +71,7 @@ std::vector<std::string> Runtime::late_constraints(TimeValue t) const {
     for (Index v : connectors_.connector_values()[k]) {
       const InteractionValue& value = connectors_.values()[v];
       if (value.after.interval.empty() || !late(value.raw)) continue;
-      lines.push_back(layout_.connector_names[k] + ": " + format_ports(value) + " " +
+      lines.push_back(layout_.connector_names[k] + ": " + format_ports(*this, value) + " " +
                       constraint_text(value.raw));
     }
   }

@@ -29,7 +29,7 @@ std::string item_text(const Runtime& runtime, const Item& item, bool with_interv
   std::string text;
   if (item.kind == Item::Kind::Interaction) {
     const InteractionValue& value = runtime.values()[item.value];
-    text = runtime.layout().connector_names[value.connector] + ": " + runtime.format_ports(value);
+    text = runtime.layout().connector_names[value.connector] + ": " + format_ports(runtime, value);
   } else {
     const auto& system = runtime.system();
     text = runtime.layout().atom_names[item.atom] + "." +

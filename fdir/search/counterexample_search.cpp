@@ -65,7 +65,7 @@ TraceState describe(const engines::Runtime& runtime, const std::string& fired) {
     for (Index d = 0; d < type.data.size(); ++d) {
       const engines::Val v = state.data[layout.atom_data[a] + d];
       out.data.emplace_back(layout.atom_names[a] + "." + type.data[d].name,
-                            runtime.format_value(v, type.data[d].type.kind));
+                            engines::format_value(runtime.strings(), v, type.data[d].type.kind));
     }
   }
   return out;
