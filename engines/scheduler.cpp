@@ -58,6 +58,12 @@ namespace {
 /// The spare parts of `shared` that write to `output`, or new ones.
 std::unique_ptr<RunParts> take_parts(Simulator::Shared& shared, std::ostream& output) {
   auto& spare = shared.spare_parts;
+  // The last run's, the usual case: taken from the back, without erase's shift.
+  if (!spare.empty() && spare.back()->output == &output) {
+    std::unique_ptr<RunParts> parts = std::move(spare.back());
+    spare.pop_back();
+    return parts;
+  }
   const auto it = std::find_if(spare.begin(), spare.end(),
                                [&](const auto& parts) { return parts->output == &output; });
   if (it == spare.end()) return std::make_unique<RunParts>(shared, output);

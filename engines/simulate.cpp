@@ -104,8 +104,8 @@ class Simulation {
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
     if (steps) {
-      if (std::optional<RunResult> result = run_compiled(*steps)) return *result;
-      if (std::optional<RunResult> result = replay_quietly(steps_)) return *result;
+      if (std::optional<RunResult> result = run_compiled(*steps)) return std::move(*result);
+      if (std::optional<RunResult> result = replay_quietly(steps_)) return std::move(*result);
     }
     for (;;) {
       const Decision& decision = scheduler_.decide();
