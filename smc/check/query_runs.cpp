@@ -70,13 +70,22 @@ class QueryRuns::Observer final : public engines::RunObserver {
   }
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
+    record(end, message);
+    for (engines::RunObserver* o : observers_) o->finish(end, code, message);
+  }
+
+  /// The one observer given, if only one: a run can call it straight, without observe()'s
+  /// call between at every step; then record() tells the end of the run.
+  engines::RunObserver* single() const {
+    return observers_.size() == 1 ? observers_.front() : nullptr;
+  }
+  void record(engines::RunEnd end, const std::string& message) {
     end_ = end;
     if (end == engines::RunEnd::Error) {
       failure_ = message;
     } else {
       failure_.clear();
     }
-    for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 
   engines::RunEnd end() const { return end_; }
@@ -184,7 +193,15 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   observer_->start();
   trace_text_->clear();
   trace_.clear();
-  simulator_->run(index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_.get());
+  const engines::RunStreams streams{traced_ ? trace_ : sink_, sink_};
+  if (engines::RunObserver* single = observer_->single()) {
+    const engines::RunResult result = simulator_->run(index, streams, single);
+    observer_->record(result.end, result.where.empty()
+                                      ? result.message
+                                      : engines::located_message(result.where, result.message));
+  } else {
+    simulator_->run(index, streams, observer_.get());
+  }
 
   if (traced_) made.trace = trace_text_->text();
   made.trace_cut = traced_ && trace_text_->cut();
