@@ -82,15 +82,20 @@ class InterpretedAtoms final : public ModelCode {
 class InterpretedSteps final : public CompiledSteps {
  public:
   InterpretedSteps(CodeEvaluator& eval, const bipc::ir::System& system, const Layout& layout)
-      : atoms_(eval, system, layout), steps_(make_flat_steps(atoms_, system, layout)) {}
-  bool covered() const { return steps_ != nullptr; }
+      : atoms_(eval, system, layout) {
+    if (std::optional<FlatTables> tables = flat_tables(system, layout, atoms_)) {
+      steps_.emplace(atoms_, system, layout, std::move(*tables));
+    }
+  }
+  bool covered() const { return steps_.has_value(); }
   bool begin(const Run& run) override { return steps_->begin(run); }
   Outcome step(bool at_limit, StepInfo& info) override { return steps_->step(at_limit, info); }
   bool step_kept_state() const override { return steps_->step_kept_state(); }
 
  private:
   InterpretedAtoms atoms_;
-  std::unique_ptr<CompiledSteps> steps_;
+  // Held by its final type: the forwarding calls bind statically.
+  std::optional<FlatSteps<InterpretedAtoms>> steps_;
 };
 
 }  // namespace

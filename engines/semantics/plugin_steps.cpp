@@ -1,6 +1,9 @@
 // The flat step path over generated code's exported atom steps.
 #include "engines/semantics/plugin_steps.h"
 
+#include <optional>
+#include <utility>
+
 #include "engines/api/compiled_model.h"
 #include "engines/semantics/flat_steps.h"
 
@@ -67,15 +70,20 @@ class PluginSteps final : public CompiledSteps {
  public:
   PluginSteps(ModelCode& code, const CompiledAtoms& atoms, const bipc::ir::System& system,
               const Layout& layout)
-      : atoms_(code, atoms), steps_(make_flat_steps(atoms_, system, layout)) {}
-  bool covered() const { return steps_ != nullptr; }
+      : atoms_(code, atoms) {
+    if (std::optional<FlatTables> tables = flat_tables(system, layout, atoms_)) {
+      steps_.emplace(atoms_, system, layout, std::move(*tables));
+    }
+  }
+  bool covered() const { return steps_.has_value(); }
   bool begin(const Run& run) override { return steps_->begin(run); }
   Outcome step(bool at_limit, StepInfo& info) override { return steps_->step(at_limit, info); }
   bool step_kept_state() const override { return steps_->step_kept_state(); }
 
  private:
   TableAtoms atoms_;
-  std::unique_ptr<CompiledSteps> steps_;
+  // Held by its final type: the forwarding calls bind statically.
+  std::optional<FlatSteps<TableAtoms>> steps_;
 };
 
 }  // namespace
