@@ -4,5 +4,7 @@ list(APPEND ENGINES_TEST_SOURCES clock_bounds_test.cpp)
 list(APPEND ENGINES_TEST_SOURCES leading_comparison_test.cpp value_dispatch_test.cpp)
 # Actions of plain assignments, run straight on the slots.
 list(APPEND ENGINES_TEST_SOURCES simple_action_test.cpp)
+# Transitions said always to change their atom, fired by the interpreter from enabled states.
+list(APPEND ENGINES_TEST_SOURCES state_change_semantics_test.cpp)
 # Faults of the model's code at run time, reported at their place in the model.
 list(APPEND ENGINES_TEST_SOURCES model_faults_test.cpp)
