@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <random>
 
 #include "engines/engine.h"
@@ -55,20 +56,15 @@ RunParts::RunParts(Simulator::Shared& shared, std::ostream& model_output)
 
 namespace {
 
-/// The spare parts of `shared` that write to `output`, or new ones.
+/// The spare parts of `shared` that write to `output`, or new ones. Searched from the back:
+/// the last run's are there, and taking them shifts nothing.
 std::unique_ptr<RunParts> take_parts(Simulator::Shared& shared, std::ostream& output) {
   auto& spare = shared.spare_parts;
-  // The last run's, the usual case: taken from the back, without erase's shift.
-  if (!spare.empty() && spare.back()->output == &output) {
-    std::unique_ptr<RunParts> parts = std::move(spare.back());
-    spare.pop_back();
-    return parts;
-  }
-  const auto it = std::find_if(spare.begin(), spare.end(),
+  const auto it = std::find_if(spare.rbegin(), spare.rend(),
                                [&](const auto& parts) { return parts->output == &output; });
-  if (it == spare.end()) return std::make_unique<RunParts>(shared, output);
+  if (it == spare.rend()) return std::make_unique<RunParts>(shared, output);
   std::unique_ptr<RunParts> parts = std::move(*it);
-  spare.erase(it);
+  spare.erase(std::next(it).base());
   return parts;
 }
 

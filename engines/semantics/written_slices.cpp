@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "engines/semantics/copy_over.h"
+
 namespace smcbip::engines {
 
 namespace {
@@ -84,7 +86,7 @@ const unsigned char* WrittenSlices::bytes_of(const RunState& state, const Slice&
 void WrittenSlices::remember(const RunState& state, std::uint32_t p) {
   unsigned char* to = before_.data();
   for (std::uint32_t s = first_slice_[p]; s < first_slice_[p + 1]; ++s) {
-    std::memcpy(to, bytes_of(state, slices_[s]), slices_[s].size);
+    copy_bytes(to, bytes_of(state, slices_[s]), slices_[s].size);
     to += slices_[s].size;
   }
 }

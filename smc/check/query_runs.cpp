@@ -59,41 +59,19 @@ class QueryRuns::Observer final : public engines::RunObserver {
   void start() { watching_.assign(observers_.begin(), observers_.end()); }
 
   bool observe(const engines::StepInfo& step, const engines::StateView& state) override {
-    // One property, the usual case, without the erase's loop.
-    if (watching_.size() == 1) {
-      if (watching_.front()->observe(step, state)) return true;
-      watching_.clear();
-      return false;
-    }
     std::erase_if(watching_, [&](engines::RunObserver* o) { return !o->observe(step, state); });
     return !watching_.empty();
   }
 
   void finish(engines::RunEnd end, int code, const std::string& message) override {
-    record(end, message);
     for (engines::RunObserver* o : observers_) o->finish(end, code, message);
   }
 
-  /// The one observer given, if only one: a run can call it straight, without observe()'s
-  /// call between at every step; then record() tells the end of the run.
-  engines::RunObserver* single() const {
-    return observers_.size() == 1 ? observers_.front() : nullptr;
-  }
-  void record(engines::RunEnd end, const std::string& message) {
-    end_ = end;
-    if (end == engines::RunEnd::Error) {
-      failure_ = message;
-    } else {
-      failure_.clear();
-    }
-  }
-
-  engines::RunEnd end() const { return end_; }
-  const std::string& failure() const { return failure_; }
+  /// What a run observes: the one observer given, called straight by the run (a statistical
+  /// check's usual case, one property), else this, which passes each step on.
+  engines::RunObserver* watcher() { return observers_.size() == 1 ? observers_.front() : this; }
 
  private:
-  engines::RunEnd end_ = engines::RunEnd::Stopped;
-  std::string failure_;
   std::vector<engines::RunObserver*> observers_, watching_;
 };
 
@@ -193,20 +171,20 @@ void QueryRuns::run(std::uint64_t index, const std::atomic<bool>* done, RunOutco
   observer_->start();
   trace_text_->clear();
   trace_.clear();
-  const engines::RunStreams streams{traced_ ? trace_ : sink_, sink_};
-  if (engines::RunObserver* single = observer_->single()) {
-    const engines::RunResult result = simulator_->run(index, streams, single);
-    observer_->record(result.end, result.where.empty()
-                                      ? result.message
-                                      : engines::located_message(result.where, result.message));
-  } else {
-    simulator_->run(index, streams, observer_.get());
-  }
+  const engines::RunResult result = simulator_->run(
+      index, engines::RunStreams{traced_ ? trace_ : sink_, sink_}, observer_->watcher());
 
   if (traced_) made.trace = trace_text_->text();
   made.trace_cut = traced_ && trace_text_->cut();
-  made.end = observer_->end();
-  made.failure = observer_->failure();
+  made.end = result.end;
+  // As the run's observers were told it: located where the model gave a place.
+  if (result.end != engines::RunEnd::Error) {
+    made.failure.clear();
+  } else if (result.where.empty()) {
+    made.failure = result.message;
+  } else {
+    made.failure = engines::located_message(result.where, result.message);
+  }
   std::vector<Outcome>& outcomes = made.points;
   outcomes.assign(n, Outcome{});
   for (std::size_t p = 0; p < n; ++p) {
