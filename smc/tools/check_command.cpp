@@ -302,6 +302,12 @@ int run_check(CheckCommand check) {
     std::cerr << parsed.diagnostics.format(parsed.sources);
     return kInputError;
   }
+  if (parsed.file.queries.empty()) {
+    // Nothing to answer is a mistake (the wrong file, every query commented out), not a
+    // success with no output.
+    std::cerr << check.properties << ": error: the property file holds no query to answer\n";
+    return kInputError;
+  }
   if (!plottable(check, parsed.file) || !writable_outputs(check) || !trace_folder(check)) {
     return kInputError;
   }

@@ -101,6 +101,8 @@ expect 65 "the model file is a device" "$bin/smcbip" simulate /dev/zero
 expect 2 "the model file is a folder" "$bin/smcbip" check "$out" "$out/one.mtl"
 expect 2 "the property file is a device" "$bin/smcbip" check "$channel" /dev/zero --root 'System()'
 expect 2 "the trace is a device" "$bin/smcbip" monitor "$out/one.mtl" --trace /dev/zero
+printf '// every query commented out\nconst k = 1\n' >"$out/none.mtl"
+expect 2 "the property file holds no query to answer" "${check[@]/$out\/one.mtl/$out/none.mtl}"
 head -c $(((4 << 20) + 1)) /dev/zero | tr '\0' ' ' >"$out/huge.mtl"
 expect 2 "the property file is larger than 4 MiB" "${check[@]/$out\/one.mtl/$out/huge.mtl}"
 
