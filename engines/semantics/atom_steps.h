@@ -31,45 +31,18 @@ namespace smcbip::engines {
   return true;
 }
 
-/// Whether the leading comparisons of a guard all hold on an atom's data and parameters.
-[[gnu::always_inline]] inline bool leading_holds(const bipc::ir::LeadingComparison& c,
-                                                 const Val* atom_data, const Val* atom_params) {
-  const auto read = [&](const bipc::ir::IntOperand& o) {
-    switch (o.kind) {
-      case bipc::ir::IntOperand::Kind::AtomData:
-        return atom_data[o.index].i;
-      case bipc::ir::IntOperand::Kind::AtomParam:
-        return atom_params[o.index].i;
-      case bipc::ir::IntOperand::Kind::Literal:
-        break;
-    }
-    return o.literal;
-  };
-  for (std::size_t k = 0; k < c.count; ++k) {
-    const bipc::ir::IntComparison& test = c.tests[k];
-    const std::int64_t a = read(test.left), b = read(test.right);
-    bool holds = false;
-    switch (test.op) {
-      case bipc::ir::Op::Eq:
-        holds = a == b;
-        break;
-      case bipc::ir::Op::Ne:
-        holds = a != b;
-        break;
-      case bipc::ir::Op::Lt:
-        holds = a < b;
-        break;
-      case bipc::ir::Op::Le:
-        holds = a <= b;
-        break;
-      case bipc::ir::Op::Gt:
-        holds = a > b;
-        break;
-      default:
-        holds = a >= b;
-        break;
-    }
-    if (!holds) return false;
+/// Whether the leading comparisons of a guard hold on an atom's data and parameters, from test
+/// `first` on.
+[[gnu::always_inline]] inline bool leading_holds(const LeadingTests& c, const Val* atom_data,
+                                                 const Val* atom_params, std::size_t first = 0) {
+  const Val* const base[] = {atom_data, atom_params, c.literals.data()};
+  for (std::size_t k = first; k < c.count; ++k) {
+    const LeadingTests::Test& test = c.tests[k];
+    const std::int64_t a = base[test.left_base][test.left].i;
+    const std::int64_t b = base[test.right_base][test.right].i;
+    // 0, 1 or 2 as a is less than, equal to or greater than b.
+    const unsigned order = static_cast<unsigned>((a > b) - (a < b) + 1);
+    if (((test.holds_when >> order) & 1u) == 0) return false;
   }
   return true;
 }
@@ -79,7 +52,8 @@ namespace smcbip::engines {
                                                        const TransitionEntry& entry,
                                                        const Frame& f) {
   return entry.leading == bipc::ir::kNone ||
-         leading_holds(layout.leading_tests[entry.leading], f.atom_data, f.atom_params);
+         leading_holds(layout.leading_tests[entry.leading], f.atom_data, f.atom_params,
+                       entry.first_test);
 }
 
 /// Offers the transition of `entry` when it is enabled; its port when that port already has an

@@ -221,13 +221,64 @@ std::optional<std::vector<PortSet>> defined_interactions(const std::vector<Defin
   return out;
 }
 
+LeadingTests compile_leading(const bipc::ir::LeadingComparison& leading) {
+  LeadingTests out;
+  out.count = leading.count;
+  std::uint32_t literals = 0;
+  const auto operand = [&](const bipc::ir::IntOperand& o, LeadingTests::Base& base, Index& at) {
+    switch (o.kind) {
+      case bipc::ir::IntOperand::Kind::AtomData:
+        base = LeadingTests::kData;
+        at = o.index;
+        return;
+      case bipc::ir::IntOperand::Kind::AtomParam:
+        base = LeadingTests::kParams;
+        at = o.index;
+        return;
+      case bipc::ir::IntOperand::Kind::Literal:
+        break;
+    }
+    base = LeadingTests::kLiterals;
+    at = literals;
+    out.literals[literals++] = make_int(o.literal);
+  };
+  constexpr std::uint8_t kLess = 1, kEqual = 2, kGreater = 4;
+  for (std::size_t k = 0; k < leading.count; ++k) {
+    const bipc::ir::IntComparison& c = leading.tests[k];
+    LeadingTests::Test& test = out.tests[k];
+    operand(c.left, test.left_base, test.left);
+    operand(c.right, test.right_base, test.right);
+    switch (c.op) {
+      case bipc::ir::Op::Eq:
+        test.holds_when = kEqual;
+        break;
+      case bipc::ir::Op::Ne:
+        test.holds_when = kLess | kGreater;
+        break;
+      case bipc::ir::Op::Lt:
+        test.holds_when = kLess;
+        break;
+      case bipc::ir::Op::Le:
+        test.holds_when = kLess | kEqual;
+        break;
+      case bipc::ir::Op::Gt:
+        test.holds_when = kGreater;
+        break;
+      default:  // Ge: leading_comparison keeps to Eq..Ge
+        test.holds_when = kEqual | kGreater;
+        break;
+    }
+  }
+  return out;
+}
+
 namespace {
 
 /// The datum and literal of a leading `d == literal` (either way round), if the entry has one.
 std::optional<std::pair<Index, std::int64_t>> state_test(const Layout& layout,
                                                          const TransitionEntry& entry) {
   if (entry.leading == bipc::ir::kNone) return std::nullopt;
-  const bipc::ir::IntComparison& test = layout.leading_tests[entry.leading].tests[0];
+  const bipc::ir::IntComparison& test = layout.leading_comparisons[entry.leading].tests[0];
   using Kind = bipc::ir::IntOperand::Kind;
   if (test.op != bipc::ir::Op::Eq) return std::nullopt;
   if (test.left.kind == Kind::AtomData && test.right.kind == Kind::Literal) {
@@ -278,7 +329,8 @@ void add_transition_tables(const System& system, Layout& layout) {
       if (auto leading = bipc::ir::leading_comparison(transition.guard)) {
         entry.leading = static_cast<Index>(layout.leading_tests.size());
         entry.leading_whole = leading->whole;
-        layout.leading_tests.push_back(*leading);
+        layout.leading_comparisons.push_back(*leading);
+        layout.leading_tests.push_back(compile_leading(*leading));
       }
       if (!transition.from.empty()) entry.first_place = transition.from.front();
       (transition.port == bipc::ir::kNone ? internal : labelled).push_back(entry);
@@ -288,8 +340,12 @@ void add_transition_tables(const System& system, Layout& layout) {
     if (!bipc::ir::is_state_machine(type)) continue;
     from_place.resize(type.places.size());
     for (const TransitionEntry& entry : labelled) from_place[entry.first_place].push_back(entry);
-    for (const std::vector<TransitionEntry>& entries : from_place) {
+    for (std::vector<TransitionEntry>& entries : from_place) {
       dispatch.push_back(value_dispatch(layout, entries));
+      // The dispatch finds the entries whose first test holds.
+      if (dispatch.back()) {
+        for (TransitionEntry& entry : entries) entry.first_test = 1;
+      }
     }
   }
 }

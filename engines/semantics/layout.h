@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -39,6 +40,26 @@ struct PriorityRule {
   PortSet high = 0;                        // 0 with a connector: `D:*` (every interaction of D)
 };
 
+/// The leading comparisons of a guard (bipc::ir::LeadingComparison) as the engines test them:
+/// each operand read from one of three bases, the atom's data, its parameters or the literals
+/// kept here, and each comparison by the orders of its operands it holds in. A test costs a few
+/// loads and no branch on its shape.
+struct LeadingTests {
+  enum Base : std::uint8_t { kData, kParams, kLiterals };
+  struct Test {
+    Base left_base = kLiterals, right_base = kLiterals;
+    /// Bit 0: holds when left < right, bit 1: when equal, bit 2: when greater.
+    std::uint8_t holds_when = 0;
+    Index left = 0, right = 0;  // slots, or indices into `literals`
+  };
+  std::array<Test, bipc::ir::LeadingComparison::kMax> tests{};
+  std::array<Val, 2 * bipc::ir::LeadingComparison::kMax> literals{};
+  std::uint8_t count = 0;
+};
+
+/// The tests of `leading`, in its order.
+LeadingTests compile_leading(const bipc::ir::LeadingComparison& leading);
+
 /// A transition of an atom type as its atoms look for enabled ones.
 struct TransitionEntry {
   Index transition = 0;
@@ -49,6 +70,9 @@ struct TransitionEntry {
   /// it when they are the whole guard.
   Index leading = bipc::ir::kNone;
   bool leading_whole = false;  // they are the whole guard
+  /// The first of them to test: 1 where a ValueDispatch chose the entry by its first, which
+  /// then holds.
+  std::uint8_t first_test = 0;
 };
 
 /// Transitions (positions in a list of entries) by the literal their guard compares one datum
@@ -82,8 +106,9 @@ struct Layout {
   /// led by `d == literal` on one datum d (a state variable: `s == 3`), the transitions by
   /// literal, so that an atom looks only at those its value of d can enable.
   std::vector<std::vector<std::optional<ValueDispatch>>> dispatch_from_place;
-  /// The leading comparisons of guards (TransitionEntry::leading).
-  std::vector<bipc::ir::LeadingComparison> leading_tests;
+  /// The leading comparisons of guards (TransitionEntry::leading), and as they are tested.
+  std::vector<bipc::ir::LeadingComparison> leading_comparisons;
+  std::vector<LeadingTests> leading_tests;
   std::vector<std::vector<DefinedInteraction>> defined;  // per connector, in define order
   /// Per connector: whether `defined` lists every interaction (not when there are too many or
   /// the connector is too wide; it is then maximal_only).

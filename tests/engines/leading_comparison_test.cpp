@@ -52,7 +52,7 @@ class LeadingComparisonTest : public ::testing::Test {
         Frame frame;
         frame.atom_data = data_;
         frame.atom_params = params_;
-        const bool test = leading_holds(*leading, data_, params_);
+        const bool test = leading_holds(compile_leading(*leading), data_, params_);
         const bool holds = eval_.holds(guard, frame);
         if (!test) {
           EXPECT_FALSE(holds) << a << ", " << b;
