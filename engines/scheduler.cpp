@@ -113,11 +113,15 @@ bool Scheduler::start_state() {
 bool Scheduler::started_from_kept_state() const { return parts_->initial_state.has_value(); }
 
 bool Scheduler::restart(std::uint64_t run_index) {
+  renew(run_index);
+  return start();
+}
+
+void Scheduler::renew(std::uint64_t run_index) {
   random_ = RandomStream(shared_.seed, run_index);
   planner_.forget();
   steps_ = 0;
   idle_step_ = false;
-  return start();
 }
 
 CompiledSteps* Scheduler::compiled_steps() {

@@ -56,7 +56,12 @@ class PromptPicker : public detail::ItemPicker {
   bool verbose_;
 };
 
-/// One run of a Simulator: the scheduler's decisions, the text trace, real time.
+}  // namespace
+
+namespace detail {
+
+/// One run of a Simulator: the scheduler's decisions, the text trace, real time. Kept by the
+/// simulator for its next run on the same streams (renew), which then costs no set-up.
 class Simulation {
  public:
   /// `picker` (optional) chooses the items instead of the scheduler (a replay).
@@ -65,7 +70,9 @@ class Simulation {
       : shared_(shared),
         options_(shared.options),
         out_(streams.trace),
-        observer_(observer),
+        model_out_(streams.model),
+        input_(streams.input),
+        observer_(&observer),
         verbose_(!options_.silent && options_.trace == TraceFormat::Text),
         picker_(streams.trace, streams.input, steps_, verbose_),
         scheduler_(shared, run_index, streams.model,
@@ -75,6 +82,19 @@ class Simulation {
         picked_(picker != nullptr),
         runtime_(scheduler_.runtime()),
         run_index_(run_index) {}
+
+  /// Whether a run on `streams` can be made by this simulation (renew).
+  bool writes_to(const RunStreams& streams) const {
+    return &streams.trace == &out_ && &streams.model == &model_out_ && streams.input == input_;
+  }
+  /// Makes this simulation run `run_index` with `observer`, as a new one would (its error, as
+  /// the scheduler's, is only read once a failure of the run has set it).
+  void renew(std::uint64_t run_index, RunObserver& observer) {
+    observer_ = &observer;
+    steps_ = 0;
+    run_index_ = run_index;
+    scheduler_.renew(run_index);
+  }
 
   RunResult explore() {
     if (!options_.silent) {
@@ -196,15 +216,15 @@ class Simulation {
 
   bool observe(const StepInfo& info) {
     const StateView view(shared_.system, shared_.layout, runtime_.state(), shared_.strings);
-    return observer_.observe(info, view);
+    return observer_->observe(info, view);
   }
 
   RunResult end(RunResult result) {
     // Without a place, the message as it is: a run that ends well builds no string.
     if (result.where.empty()) {
-      observer_.finish(result.end, result.code, result.message);
+      observer_->finish(result.end, result.code, result.message);
     } else {
-      observer_.finish(result.end, result.code, located_message(result.where, result.message));
+      observer_->finish(result.end, result.code, located_message(result.where, result.message));
     }
     return result;
   }
@@ -301,7 +321,9 @@ class Simulation {
   Simulator::Shared& shared_;
   const SimulateOptions& options_;
   std::ostream& out_;
-  RunObserver& observer_;
+  const std::ostream& model_out_;
+  std::istream* input_;
+  RunObserver* observer_;
   bool verbose_;
   std::uint64_t steps_ = 0;  // the scheduler's, as of the last step observed
   PromptPicker picker_;
@@ -313,7 +335,7 @@ class Simulation {
   RunResult error_result_;
 };
 
-}  // namespace
+}  // namespace detail
 
 Simulator::Simulator(const bipc::ir::System& system, const SimulateOptions& options,
                      const Externs& externs)
@@ -344,8 +366,22 @@ RunResult Simulator::run(std::uint64_t run_index, const RunStreams& streams,
   Observers observers(observer, jsonl ? &*jsonl : nullptr);
   // The caller's observer alone is called directly: a statistical check observes every step.
   RunObserver& watching = jsonl || !observer ? observers : *observer;
-  Simulation simulation(*shared_, run_index, streams, watching);
-  return shared_->options.explore ? simulation.explore() : simulation.run();
+  if (shared_->options.explore) {
+    detail::Simulation simulation(*shared_, run_index, streams, watching);
+    return simulation.explore();
+  }
+  // `observers` lives for this run only: a simulation that watches it is not kept.
+  if (&watching == &observers) {
+    detail::Simulation simulation(*shared_, run_index, streams, watching);
+    return simulation.run();
+  }
+  if (kept_ && kept_->writes_to(streams)) {
+    kept_->renew(run_index, watching);
+  } else {
+    kept_.reset();
+    kept_ = std::make_unique<detail::Simulation>(*shared_, run_index, streams, watching);
+  }
+  return kept_->run();
 }
 
 RunResult Simulator::replay(const ReplayScript& script, const RunStreams& streams) {
@@ -356,7 +392,8 @@ RunResult Simulator::replay(const ReplayScript& script, const RunStreams& stream
   }
   detail::ReplayFollower follower(script);
   Observers observers(&follower, jsonl ? &*jsonl : nullptr);
-  Simulation simulation(*shared_, shared_->options.run_index, streams, observers, &follower);
+  detail::Simulation simulation(*shared_, shared_->options.run_index, streams, observers,
+                                &follower);
   const RunResult result = simulation.run();
   return follower.failure() ? *follower.failure() : result;
 }

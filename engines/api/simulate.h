@@ -95,6 +95,9 @@ struct RunStreams {
 /// Runs one system many times (run indices select the random streams), keeping what does not
 /// change between runs. One simulator per thread.
 struct ReplayScript;
+namespace detail {
+class Simulation;
+}  // namespace detail
 
 class Simulator {
  public:
@@ -126,6 +129,9 @@ class Simulator {
  private:
   void prepare(const Externs& externs);
   std::unique_ptr<Shared> shared_;
+  /// The last run's simulation, for the next run on the same streams (declared after shared_:
+  /// it gives its parts back to shared_ when destroyed).
+  std::unique_ptr<detail::Simulation> kept_;
 };
 
 /// Runs `system` once (run index options.run_index) and writes its trace and the model's own

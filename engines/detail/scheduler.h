@@ -167,6 +167,8 @@ class Scheduler {
   /// start() for run `run_index` of the seed: a new run from the initial state, which reuses
   /// the buffers the last one grew.
   bool restart(std::uint64_t run_index);
+  /// Makes this scheduler run `run_index` as a new one would, before start or start_state.
+  void renew(std::uint64_t run_index);
   /// Computes the current state's items and decides what comes next; the random draws of the
   /// choice happen here. The decision (decision()) holds until the next decide(); a Fire or
   /// Receive decision can be carried out until the state changes.
