@@ -124,7 +124,7 @@ class Simulation {
     if (options_.real_time && !real_time_after_step()) return error_result_;
     if (!observe(StepInfo{})) return stopped();
     if (steps) {
-      if (std::optional<RunResult> result = run_compiled(*steps)) return std::move(*result);
+      if (const std::optional<RunEnd> how = run_compiled(*steps)) return end(*how);
       if (std::optional<RunResult> result = replay_quietly(steps_)) return std::move(*result);
     }
     for (;;) {
@@ -170,9 +170,10 @@ class Simulation {
     return scheduler_.compiled_steps();
   }
 
-  /// The run on the compiled step path; nullopt when it leaves the path (nothing observed of
-  /// the step it could not make).
-  std::optional<RunResult> run_compiled(CompiledSteps& steps) {
+  /// The run on the compiled step path: how it ends (well: the path reports no error), not yet
+  /// told to the observer; nullopt when it leaves the path (nothing observed of the step it
+  /// could not make).
+  std::optional<RunEnd> run_compiled(CompiledSteps& steps) {
     DatePlanner* planner = shared_.stochastic ? &scheduler_.planner() : nullptr;
     const bool absorbing_checks = shared_.absorbing_checks;
     if (!steps.begin({runtime_, scheduler_.random(), planner, options_.asap, options_.first_enabled,
@@ -184,17 +185,17 @@ class Simulation {
       switch (steps.step(options_.limit && steps_ >= *options_.limit, info)) {
         case CompiledSteps::Outcome::Fired:
           info.step = ++steps_;
-          if (!observe(info)) return stopped();
+          if (!observe(info)) return RunEnd::Stopped;
           // A step that kept the places and data may have reached an absorbing state: the
           // scheduler, which tells, replays the run and goes on from there.
           if (absorbing_checks && steps.step_kept_state()) return std::nullopt;
           continue;
         case CompiledSteps::Outcome::Deadlock:
-          return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
+          return RunEnd::Deadlock;
         case CompiledSteps::Outcome::Timelock:
-          return end({kRunOk, RunEnd::Timelock, steps_, {}, {}});
+          return RunEnd::Timelock;
         case CompiledSteps::Outcome::Limit:
-          return end({kRunOk, RunEnd::Limit, steps_, {}, {}});
+          return RunEnd::Limit;
         case CompiledSteps::Outcome::Beyond:
           return std::nullopt;
       }
@@ -229,7 +230,14 @@ class Simulation {
     return result;
   }
 
-  RunResult stopped() { return end({kRunOk, RunEnd::Stopped, steps_, {}, {}}); }
+  /// A run that ends well: built in place (a statistical check ends many short runs so).
+  RunResult end(RunEnd how) {
+    RunResult result{kRunOk, how, steps_, {}, {}};
+    observer_->finish(how, kRunOk, result.message);
+    return result;
+  }
+
+  RunResult stopped() { return end(RunEnd::Stopped); }
 
   RunResult fail(const ModelError& error) {
     if (options_.trace == TraceFormat::Text || error.code == kTimeSafetyViolation) {
@@ -251,21 +259,21 @@ class Simulation {
     switch (decision.end) {
       case RunEnd::Deadlock:
         header("deadlock!");
-        return end({kRunOk, RunEnd::Deadlock, steps_, {}, {}});
+        return end(RunEnd::Deadlock);
       case RunEnd::Timelock: {
         const Interval w = runtime_.wait_interval();
         header(std::string("time-lock ") + (w.right_open ? "right before " : "at ") +
                format_time(w.right) + "!");
-        return end({kRunOk, RunEnd::Timelock, steps_, {}, {}});
+        return end(RunEnd::Timelock);
       }
       case RunEnd::Limit:
         header("stop (reached limit of " + std::to_string(*options_.limit) + " states)");
-        return end({kRunOk, RunEnd::Limit, steps_, {}, {}});
+        return end(RunEnd::Limit);
       case RunEnd::Stopped:
         return stopped();
       case RunEnd::Absorbing:
         header("absorbing state!");
-        return end({kRunOk, RunEnd::Absorbing, steps_, {}, {}});
+        return end(RunEnd::Absorbing);
       case RunEnd::Error:
         break;
     }
