@@ -9,6 +9,7 @@
 #include "engines/interpreter/code_eval.h"
 #include "engines/semantics/atom_steps.h"
 #include "engines/semantics/flat_steps.h"
+#include "engines/semantics/offer_memo.h"
 
 namespace smcbip::engines {
 
@@ -19,7 +20,7 @@ namespace {
 class InterpretedAtoms final : public ModelCode {
  public:
   InterpretedAtoms(CodeEvaluator& eval, const bipc::ir::System& system, const Layout& layout)
-      : eval_(eval), system_(system), layout_(layout) {
+      : eval_(eval), system_(system), layout_(layout), memo_(system, layout) {
     for (const bipc::ir::AtomType& type : system.atom_types) {
       first_action_.push_back(static_cast<std::uint32_t>(actions_.size()));
       for (const bipc::ir::Transition& transition : type.transitions) {
@@ -46,7 +47,14 @@ class InterpretedAtoms final : public ModelCode {
   bool compiles_atom_type(bipc::ir::Index /*type*/) const override { return true; }
   bipc::ir::Index atom_offers(bipc::ir::Index type, const std::uint8_t* marking, const Frame& frame,
                               std::optional<AtomPortValue>* offers) override {
-    return interpreted_offers(system_, layout_, type, marking, frame, eval_, offers);
+    if (!memo_.keeps(type)) {
+      return interpreted_offers(system_, layout_, type, marking, frame, eval_, offers);
+    }
+    bipc::ir::Index result = bipc::ir::kNone;
+    if (memo_.find(type, marking, frame, offers, result)) return result;
+    result = interpreted_offers(system_, layout_, type, marking, frame, eval_, offers);
+    memo_.remember(type, marking, frame, offers, result);
+    return result;
   }
   bipc::ir::Index atom_internal(bipc::ir::Index type, const std::uint8_t* marking,
                                 const Frame& frame) override {
@@ -72,6 +80,7 @@ class InterpretedAtoms final : public ModelCode {
   CodeEvaluator& eval_;
   const bipc::ir::System& system_;
   const Layout& layout_;
+  OfferMemo memo_;
   // Per atom type its first transition's entry in actions_; the simple actions' assignments.
   std::vector<std::uint32_t> first_action_;
   std::vector<Action> actions_;

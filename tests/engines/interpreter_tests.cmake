@@ -2,6 +2,8 @@
 list(APPEND ENGINES_TEST_SOURCES clock_bounds_test.cpp)
 # Guards led by an integer comparison, tested before (or instead of) interpreting them.
 list(APPEND ENGINES_TEST_SOURCES leading_comparison_test.cpp value_dispatch_test.cpp)
+# The offers of atoms guarded by those comparisons alone, kept by the values they read.
+list(APPEND ENGINES_TEST_SOURCES offer_memo_test.cpp)
 # Actions of plain assignments, run straight on the slots.
 list(APPEND ENGINES_TEST_SOURCES simple_action_test.cpp)
 # Transitions said always to change their atom, fired by the interpreter from enabled states.
