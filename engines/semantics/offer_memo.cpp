@@ -65,8 +65,8 @@ void OfferMemo::remember(Index type, const std::uint8_t* marking, const Frame& f
     }
     t.lookups = t.hits = 0;
   }
-  const Key key = key_of(t, marking, f);
-  const std::size_t e = slot(t, key);
+  std::size_t e = 0;
+  const Key key = key_of(t, marking, f, e);
   t.keys[e] = key;
   t.filled[e] = 1;
   t.results[e] = result;

@@ -34,10 +34,10 @@ class OfferMemo {
   [[gnu::always_inline]] bool find(Index type, const std::uint8_t* marking, const Frame& f,
                                    std::optional<AtomPortValue>* offers, Index& result) {
     Type& t = types_[type];
-    const Key key = key_of(t, marking, f);
-    const std::size_t e = slot(t, key);
+    std::size_t e = 0;
+    const Key key = key_of(t, marking, f, e);
     ++t.lookups;
-    if (!t.filled[e] || !(t.keys[e] == key)) return false;
+    if (!t.filled[e] || !t.keys[e].same(key)) return false;
     ++t.hits;
     const Offered* offered = t.offered.data() + e * t.port_count;
     for (std::uint32_t p = 0; p < t.port_count; ++p) {
@@ -68,7 +68,13 @@ class OfferMemo {
   struct Key {
     std::uint32_t place = 0;
     std::array<std::int64_t, kMaxValues> values{};
-    bool operator==(const Key&) const = default;
+    /// Every field compared, without branches (std::array's == calls memcmp).
+    bool same(const Key& o) const {
+      static_assert(kMaxValues == 6);
+      return ((place ^ o.place) | (values[0] ^ o.values[0]) | (values[1] ^ o.values[1]) |
+              (values[2] ^ o.values[2]) | (values[3] ^ o.values[3]) | (values[4] ^ o.values[4]) |
+              (values[5] ^ o.values[5])) == 0;
+    }
   };
   /// A port's offer: its transition (kNone: none), untimed.
   struct Offered {
@@ -86,24 +92,21 @@ class OfferMemo {
     std::uint64_t lookups = 0, hits = 0;
   };
 
+  /// The key of an atom's state, and its entry in the table (`entry`).
   [[gnu::always_inline]] static Key key_of(const Type& t, const std::uint8_t* marking,
-                                           const Frame& f) {
+                                           const Frame& f, std::size_t& entry) {
     Key key;
     while (key.place + 1 < t.place_count && !marking[key.place]) ++key.place;
-    const std::vector<Read>& reads = t.reads[key.place];
-    for (std::size_t k = 0; k < reads.size(); ++k) {
-      const Val* base = reads[k].base == LeadingTests::kData ? f.atom_data : f.atom_params;
-      key.values[k] = base[reads[k].index].i;
-    }
-    return key;
-  }
-
-  [[gnu::always_inline]] static std::size_t slot(const Type& t, const Key& key) {
+    const Val* const base[] = {f.atom_data, f.atom_params};  // LeadingTests::kData, kParams
+    const Read* read = t.reads[key.place].data();
+    const std::size_t count = t.reads[key.place].size();
     std::uint64_t h = key.place + 1;
-    for (std::size_t k = 0; k < t.reads[key.place].size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k, ++read) {
+      key.values[k] = base[read->base][read->index].i;
       h = (h ^ static_cast<std::uint64_t>(key.values[k])) * 0x9E3779B97F4A7C15u;
     }
-    return static_cast<std::size_t>((h ^ (h >> 29)) & (kEntries - 1));
+    entry = static_cast<std::size_t>((h ^ (h >> 29)) & (kEntries - 1));
+    return key;
   }
 
   static Type type_of(const bipc::ir::System& system, const Layout& layout, Index type);
