@@ -83,8 +83,7 @@ Scheduler::Scheduler(Simulator::Shared& shared, std::uint64_t run_index, std::os
       dates_(parts_->dates),
       planner_problem_(parts_->planner_problem) {
   // As restart(): start() initialises the runtime whatever run it made before.
-  random_ = RandomStream(shared.seed, run_index);
-  planner_.forget();
+  renew(run_index);
 }
 
 Scheduler::~Scheduler() {
@@ -122,6 +121,7 @@ void Scheduler::renew(std::uint64_t run_index) {
   planner_.forget();
   steps_ = 0;
   idle_step_ = false;
+  checks_absorbing_ = shared_.checks_absorbing_from_start();
 }
 
 CompiledSteps* Scheduler::compiled_steps() {

@@ -175,9 +175,12 @@ class Simulation {
   /// could not make).
   std::optional<RunEnd> run_compiled(CompiledSteps& steps) {
     DatePlanner* planner = shared_.stochastic ? &scheduler_.planner() : nullptr;
+    // Absorbing states are looked for from step options_.absorbing_after on, as the scheduler
+    // looks for them.
     const bool absorbing_checks = shared_.absorbing_checks;
+    bool checking = shared_.checks_absorbing_from_start();
     if (!steps.begin({runtime_, scheduler_.random(), planner, options_.asap, options_.first_enabled,
-                      scheduler_.started_from_kept_state(), absorbing_checks})) {
+                      scheduler_.started_from_kept_state(), checking})) {
       return std::nullopt;
     }
     StepInfo info;
@@ -188,7 +191,12 @@ class Simulation {
           if (!observe(info)) return RunEnd::Stopped;
           // A step that kept the places and data may have reached an absorbing state: the
           // scheduler, which tells, replays the run and goes on from there.
-          if (absorbing_checks && steps.step_kept_state()) return std::nullopt;
+          if (checking) {
+            if (steps.step_kept_state()) return std::nullopt;
+          } else if (absorbing_checks && steps_ >= options_.absorbing_after) {
+            steps.check_kept_state();
+            checking = true;
+          }
           continue;
         case CompiledSteps::Outcome::Deadlock:
           return RunEnd::Deadlock;

@@ -68,6 +68,11 @@ struct SimulateOptions {
   /// Only on models whose guards and actions read no clock and call no extern function, and
   /// that have no extern port: there the places and data alone decide what is enabled.
   bool stop_absorbing = false;
+  /// stop_absorbing: runs look for absorbing states once they have made this many steps (0:
+  /// from the start), and from the start once a run of the simulator has ended in one. Looking
+  /// costs a little on every step, so runs that mostly end by a bound of their own look only
+  /// when they last, or when the model has shown it has such states.
+  std::uint64_t absorbing_after = 0;
 };
 
 /// The result of a run: its code (RunCode), how it ended, and the number of steps executed.

@@ -47,6 +47,13 @@ struct Simulator::Shared {
   /// options.stop_absorbing on a model where the places and data alone decide what is
   /// enabled (see SimulateOptions::stop_absorbing): runs look for absorbing states.
   bool absorbing_checks = false;
+  /// A run has ended in an absorbing state: the next ones look for them from their start
+  /// (SimulateOptions::absorbing_after).
+  bool absorbed_once = false;
+  /// Whether a run looks for absorbing states from its first step.
+  bool checks_absorbing_from_start() const {
+    return absorbing_checks && (options.absorbing_after == 0 || absorbed_once);
+  }
   /// No extern ports or functions: the initial actions and resumes, the only other code
   /// start() runs, draw nothing and read nothing from outside, so every run starts in the same
   /// state.
@@ -231,6 +238,8 @@ class Scheduler {
   Decision decision_;
   // absorbing_checks: the last step changed no place, data or pending resume.
   bool idle_step_ = false;
+  // absorbing_checks, from step options.absorbing_after on: the steps tell whether they did.
+  bool checks_absorbing_ = false;
 };
 
 // The per-step functions are inlined into each scheduler loop (Simulator's, Execution's), as they
@@ -310,7 +319,10 @@ inline const Decision& Scheduler::decide() {
   if (idle_step_ && !arrival) {
     idle_step_ = false;
     bool failed = false;
-    if (absorbing(failed)) return end(RunEnd::Absorbing);
+    if (absorbing(failed)) {
+      shared_.absorbed_once = true;
+      return end(RunEnd::Absorbing);
+    }
     if (failed) return fail();
   }
   if (options_.limit && steps_ >= *options_.limit) return end(RunEnd::Limit);
@@ -333,11 +345,15 @@ inline bool Scheduler::perform(const Decision& decision) {
   if (decision.kind == Decision::Kind::Receive) {
     return runtime_.receive_unexpected_events(decision.date) || record_error();
   }
-  if (shared_.absorbing_checks) remember_discrete_state();
+  if (checks_absorbing_) remember_discrete_state();
   if (!runtime_.execute(decision.item, decision.date)) return record_error();
   ++steps_;
   if (!options_.real_time && !runtime_.resume_atoms(decision.date)) return record_error();
-  if (shared_.absorbing_checks) idle_step_ = discrete_state_kept(runtime_.state());
+  if (checks_absorbing_) {
+    idle_step_ = discrete_state_kept(runtime_.state());
+  } else if (shared_.absorbing_checks && steps_ >= options_.absorbing_after) {
+    checks_absorbing_ = true;
+  }
   return true;
 }
 

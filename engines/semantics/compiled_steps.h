@@ -41,6 +41,8 @@ class CompiledSteps {
   /// Run::checks_kept_state: whether the last step that fired left every place and datum as
   /// they were (Scheduler::discrete_state_kept), from what it fired alone.
   virtual bool step_kept_state() const = 0;
+  /// From the next step on, as if the run had begun with Run::checks_kept_state.
+  virtual void check_kept_state() = 0;
 };
 
 }  // namespace smcbip::engines

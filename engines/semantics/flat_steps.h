@@ -94,6 +94,10 @@ class FlatSteps final : public CompiledSteps {
   }
 
   bool step_kept_state() const override { return kept_; }
+  void check_kept_state() override {
+    checks_kept_ = true;
+    if (!written_) written_.emplace(t_);
+  }
 
  private:
   // The flags of positions and ports (not std::uint8_t: see FlatFlag).

@@ -79,6 +79,7 @@ class PluginSteps final : public CompiledSteps {
   bool begin(const Run& run) override { return steps_->begin(run); }
   Outcome step(bool at_limit, StepInfo& info) override { return steps_->step(at_limit, info); }
   bool step_kept_state() const override { return steps_->step_kept_state(); }
+  void check_kept_state() override { steps_->check_kept_state(); }
 
  private:
   TableAtoms atoms_;

@@ -131,19 +131,30 @@ QueryRuns::QueryRuns(const bipc::ir::System& system, const engines::PluginEntry*
   }
   engines::SimulateOptions runs = options;
   runs.stop_absorbing = stops_when_absorbed(q, query.points);
+  // A bounded formula ends most runs by itself: only the runs that last look for absorbing
+  // states (a run absorbed early would otherwise loop in its state up to the bound).
+  constexpr std::uint64_t kLastingRun = 1000;
+  runs.absorbing_after = bounded(q, query.points) ? kLastingRun : 0;
   simulator_ = make_simulator(system, compiled, runs, externs_);
 }
 
 bool QueryRuns::stops_when_absorbed(const monitors::Query& q,
                                     const std::vector<monitors::Bindings>& points) const {
   // PRISM's simulator ends a path in a state it cannot leave, for the unbounded operators that
-  // would otherwise run to the step limit. A bounded formula ends by itself.
-  if (!q.formula || monitors_.empty() || q.run.kind != monitors::Bound::Kind::None) return false;
+  // would otherwise run to the step limit; a bounded formula would run to its bound. The state
+  // holds forever there, which decides any formula over places and data.
+  if (!q.formula || monitors_.empty()) return false;
   for (std::size_t p = 0; p < points.size(); ++p) {
     if (!monitors_[p]->decided_by_absorbing()) return false;
-    if (monitors::horizon(*q.formula, kNanoseconds, points[p]).bounded) return false;
   }
   return true;
+}
+
+bool QueryRuns::bounded(const monitors::Query& q, const std::vector<monitors::Bindings>& points) {
+  if (!q.formula || q.run.kind != monitors::Bound::Kind::None) return true;
+  return std::any_of(points.begin(), points.end(), [&](const monitors::Bindings& b) {
+    return monitors::horizon(*q.formula, kNanoseconds, b).bounded;
+  });
 }
 
 QueryRuns::~QueryRuns() = default;

@@ -67,9 +67,11 @@ class QueryRuns {
   class CappedText;
 
   /// Whether the runs of `q` end in absorbing states (engines::SimulateOptions::stop_absorbing):
-  /// the formula is unbounded and reads places and data only, at every point.
+  /// the formula reads places and data only, at every point.
   bool stops_when_absorbed(const monitors::Query& q,
                            const std::vector<monitors::Bindings>& points) const;
+  /// Whether the runs of `q` have a bound: the query's own, or its formula's at some point.
+  static bool bounded(const monitors::Query& q, const std::vector<monitors::Bindings>& points);
 
   engines::Externs externs_;
   std::unique_ptr<engines::Simulator> simulator_;

@@ -1,7 +1,7 @@
 // Runs that reach an absorbing state (steps go on, none changes the places or data) end there
-// with their verdict, as PRISM's simulator ends its paths, instead of running to the step limit:
-// on every engine, for unbounded formulas over places and data; formulas that read a clock
-// still wait for their step limit. The probabilities are worked out in the models' headers;
+// with their verdict, as PRISM's simulator ends its paths, instead of running to the step limit
+// or the formula's bound: on every engine, for formulas over places and data; formulas that read
+// a clock still wait for their step limit. The probabilities are worked out in the models' headers;
 // seeds are fixed and each bound holds with probability 0.99 (PESTIM at alpha 0.01).
 #include <gtest/gtest.h>
 
@@ -42,6 +42,28 @@ TEST(Absorbing, UntimedLotteryStopsInItsAbsorbingStatesOnEveryEngine) {
       EXPECT_EQ(r.undecided, 0u);
       EXPECT_NEAR(r.estimate, 1.0 / 3.0, 0.03) << "engine " << static_cast<int>(engine);
     }
+  }
+}
+
+TEST(Absorbing, BoundedFormulasAreDecidedInTheAbsorbingStatesOfLastingRuns) {
+  // The step bounds lie beyond the step limit, so without the stop every losing run would end
+  // undecided at the limit. Runs look for absorbing states after 1,000 steps, and from their
+  // start once one has ended in one.
+  for (const auto engine : {engines::EngineKind::Reference, engines::EngineKind::Optimised,
+                            engines::EngineKind::Multithread}) {
+    const auto results =
+        check_test_model("lottery.bip",
+                         "P=? [ F[#<=100000] lottery.WON ]\nPr[#<=100000](F lottery.WON)\n"
+                         "Pr[#<=100000](G !lottery.WON)\n",
+                         short_runs(engine));
+    ASSERT_EQ(results.size(), 3u);
+    for (const QueryResult& r : results) {
+      EXPECT_TRUE(r.error.empty()) << r.error;
+      EXPECT_EQ(r.undecided, 0u) << "engine " << static_cast<int>(engine);
+    }
+    EXPECT_NEAR(results[0].estimate, 1.0 / 3.0, 0.03);
+    EXPECT_NEAR(results[1].estimate, 1.0 / 3.0, 0.03);
+    EXPECT_NEAR(results[2].estimate, 2.0 / 3.0, 0.03);
   }
 }
 
