@@ -140,7 +140,11 @@ for ((k = 0; k < repeat; k++)); do
       read -r wall cpu <"$work/time"
       times[$c/$tool]+="$wall "
       cpus[$c/$tool]+="$cpu "
-      read -r "runs[$c/$tool]" "answer[$c/$tool]" < <(read_answer "$tool" "$work/out")
+      # A command substitution, not a process substitution: the shell waits for the reader (a
+      # Python process for smcbip's JSON) here, where a process substitution would leave it to
+      # be reaped during the next timed command, whose CPU time would then include it.
+      found=$(read_answer "$tool" "$work/out")
+      read -r "runs[$c/$tool]" "answer[$c/$tool]" <<<"$found"
     done
   done
 done
