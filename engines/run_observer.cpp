@@ -6,7 +6,19 @@
 
 namespace smcbip::engines {
 
+StateView::StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
+                     const StringPool& strings)
+    : StateView(system, layout, state, strings, state.data.data(), state.marking.data()) {}
+
 TimeValue StateView::now() const { return state_.now; }
+
+std::size_t StateView::data_offset(bipc::ir::Index atom, bipc::ir::Index slot) const {
+  return layout_.atom_data[atom] + slot;
+}
+
+std::size_t StateView::place_offset(bipc::ir::Index atom, bipc::ir::Index place) const {
+  return layout_.atom_places[atom] + place;
+}
 
 bool StateView::marked(bipc::ir::Index atom, bipc::ir::Index place) const {
   return state_.marking[layout_.atom_places[atom] + place] != 0;

@@ -224,7 +224,9 @@ class Simulation {
   }
 
   bool observe(const StepInfo& info) {
-    const StateView view(shared_.system, shared_.layout, runtime_.state(), shared_.strings);
+    const RunState& state = runtime_.state();
+    const StateView view(shared_.system, shared_.layout, state, shared_.strings, state.data.data(),
+                         state.marking.data());
     return observer_->observe(info, view);
   }
 

@@ -2,6 +2,7 @@
 // after each step, which item fired, and when. An observer may stop the run.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -20,8 +21,16 @@ class StringPool;
 class StateView {
  public:
   StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
-            const StringPool& strings)
-      : system_(system), layout_(layout), state_(state), strings_(strings) {}
+            const StringPool& strings);
+  /// The same, given the state's data and marking (the engines' step loop has them at hand).
+  StateView(const bipc::ir::System& system, const Layout& layout, const RunState& state,
+            const StringPool& strings, const Val* data, const std::uint8_t* marking)
+      : system_(system),
+        layout_(layout),
+        state_(state),
+        strings_(strings),
+        data_(data),
+        marking_(marking) {}
 
   const bipc::ir::System& system() const { return system_; }
   TimeValue now() const;
@@ -29,6 +38,12 @@ class StateView {
   bool marked(bipc::ir::Index atom, bipc::ir::Index place) const;
   /// Data variable `slot` of atom `atom` (kind: the IR's declared type).
   Val data(bipc::ir::Index atom, bipc::ir::Index slot) const;
+  /// Where data() and marked() read, the same in every state of the system's runs: a reader of
+  /// many states finds them once, then reads data_at() and marked_at().
+  std::size_t data_offset(bipc::ir::Index atom, bipc::ir::Index slot) const;
+  std::size_t place_offset(bipc::ir::Index atom, bipc::ir::Index place) const;
+  Val data_at(std::size_t offset) const { return data_[offset]; }
+  bool marked_at(std::size_t offset) const { return marking_[offset] != 0; }
   /// Clock `clock` of atom `atom` now, in the clock's unit.
   double clock(bipc::ir::Index atom, bipc::ir::Index clock) const;
   /// The rate of that clock now (1 unless the model set another).
@@ -45,6 +60,8 @@ class StateView {
   const Layout& layout_;
   const RunState& state_;
   const StringPool& strings_;
+  const Val* data_;
+  const std::uint8_t* marking_;
 };
 
 /// The step that led to a state: the initial state is step 0 and fired nothing.

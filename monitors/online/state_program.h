@@ -56,6 +56,7 @@ class StateProgram {
     const Expr* expr = nullptr;  // Name, Data, Divide, Modulo; Compare: the load's
     Code load = Code::Number;    // Compare: what is loaded (a load code)
     Code compare = Code::Equal;  // Compare: Less ... NotEqual
+    std::size_t offset = 0;      // Int, Bool, Float, Place: where a bound reader finds it
   };
   /// The kind of a data slot as the model declares it (Int also for strings and externs).
   enum class DataKind : std::uint8_t { Int, Bool, Float };
@@ -75,6 +76,21 @@ class StateProgram {
   void bind_data(const KindOf& kind_of) {
     for (std::vector<Op>* ops : {&ops_, &compares_}) {
       for (Op& op : *ops) bind(op, kind_of);
+    }
+  }
+  /// Binds every Int, Bool, Float and Place load to where it is read: `data_offset(atom, slot)`
+  /// and `place_offset(atom, place)` give it (after bind_data).
+  template <class DataOffset, class PlaceOffset>
+  void bind_offsets(const DataOffset& data_offset, const PlaceOffset& place_offset) {
+    for (std::vector<Op>* ops : {&ops_, &compares_}) {
+      for (Op& op : *ops) {
+        const Code code = op.code == Code::Compare ? op.load : op.code;
+        if (code == Code::Int || code == Code::Bool || code == Code::Float) {
+          op.offset = data_offset(op.atom, op.index);
+        } else if (code == Code::Place) {
+          op.offset = place_offset(op.atom, op.index);
+        }
+      }
     }
   }
   template <class KindOf>

@@ -63,13 +63,13 @@ class EngineReader {
     using Code = online::StateProgram::Code;
     switch (code) {
       case Code::Int:
-        return static_cast<double>(state_.data(op.atom, op.index).i);
+        return static_cast<double>(state_.data_at(op.offset).i);
       case Code::Bool:
-        return state_.data(op.atom, op.index).b ? 1 : 0;
+        return state_.data_at(op.offset).b ? 1 : 0;
       case Code::Float:
-        return state_.data(op.atom, op.index).f;
+        return state_.data_at(op.offset).f;
       case Code::Place:
-        return state_.marked(op.atom, op.index) ? 1 : 0;
+        return state_.marked_at(op.offset) ? 1 : 0;
       default:  // as EngineState: nothing else to read from a state
         return std::numeric_limits<double>::quiet_NaN();
     }
@@ -90,7 +90,8 @@ RunMonitor::RunMonitor(const Formula& formula, const TimeScale& scale, const Bin
   }
 }
 
-void RunMonitor::bind(const bipc::ir::System& system) {
+void RunMonitor::bind(const engines::StateView& state) {
+  const bipc::ir::System& system = state.system();
   const auto kind_of = [&](std::uint32_t atom, std::uint32_t slot) {
     using Kind = online::StateProgram::DataKind;
     const auto kind = system.atom_types[system.atoms[atom].type].data[slot].type.kind;
@@ -98,8 +99,16 @@ void RunMonitor::bind(const bipc::ir::System& system) {
            : kind == bipc::ir::ValueKind::Float ? Kind::Float
                                                 : Kind::Int;
   };
-  fast_->hold_program().bind_data(kind_of);
-  fast_->goal_program().bind_data(kind_of);
+  const auto data_offset = [&](std::uint32_t atom, std::uint32_t slot) {
+    return state.data_offset(atom, slot);
+  };
+  const auto place_offset = [&](std::uint32_t atom, std::uint32_t place) {
+    return state.place_offset(atom, place);
+  };
+  for (online::StateProgram* program : {&fast_->hold_program(), &fast_->goal_program()}) {
+    program->bind_data(kind_of);
+    program->bind_offsets(data_offset, place_offset);
+  }
   bound_ = &system;
 }
 
@@ -114,7 +123,7 @@ double RunMonitor::first_hit_ms() const {
 
 bool RunMonitor::observe(const engines::StepInfo& step, const engines::StateView& state) {
   if (fast_) {
-    if (&state.system() != bound_) bind(state.system());
+    if (&state.system() != bound_) bind(state);
     return fast_->step_with(EngineReader(state), step.time) == Verdict::Undecided;
   }
   return general_->step(EngineState(step, state), step.time) == Verdict::Undecided;

@@ -66,8 +66,10 @@ class RunMonitor final : public engines::RunObserver {
   bool fast() const { return fast_.has_value(); }
 
  private:
-  /// Binds the data loads of the fast monitor's programs to the kinds `system` declares.
-  void bind(const bipc::ir::System& system);
+  /// Binds the data loads of the fast monitor's programs to the kinds the state's system
+  /// declares, and its loads to where the state's data and marking hold them (the same in
+  /// every state of that system).
+  void bind(const engines::StateView& state);
 
   std::optional<OperatorMonitor> fast_;
   std::optional<OnlineMonitor> general_;     // when fast_ is not
