@@ -156,10 +156,10 @@ class FlatSteps final : public CompiledSteps {
 
   /// A step on a timed layout or in stochastic mode (FlatTimedChoice).
   Outcome timed_step(bool at_limit, StepInfo& info) {
-    const FlatTimedChoice::Choice choice =
-        timed_choice_.choose(state_->now, at_limit,
-                             {position_count_, enabled_.data(), raw_.data(), t_.stochastic.data()},
-                             {runtime_, random_, planner_, asap_, first_enabled_});
+    const FlatTimedChoice::Choice choice = timed_choice_.choose(
+        state_->now, at_limit,
+        {position_count_, enabled_.data(), raw_.data(), t_.stochastic.data(), t_.lazy_unbounded},
+        {runtime_, random_, planner_, asap_, first_enabled_});
     if (choice.outcome != Outcome::Fired) return choice.outcome;
     return fire_and_check<true>(choice.position, choice.date, info);
   }
@@ -400,6 +400,11 @@ class FlatSteps final : public CompiledSteps {
   /// (Runtime::add_choice); a connector whose ports' windows do not meet is not enabled, and
   /// its guard not run (Runtime::keep_value_if_allowed).
   [[gnu::always_inline]] void recompute_timed(std::uint32_t p) {
+    // Every constraint stays the whole time line, lazy, as compute_start() left it.
+    if (t_.lazy_unbounded) {
+      enabled_[p] = flag(offered(p));
+      return;
+    }
     // Narrowed in place, field by field: a Constraint built on the stack and copied whole
     // stalled on store forwarding.
     Constraint& raw = raw_[p];
@@ -422,6 +427,17 @@ class FlatSteps final : public CompiledSteps {
       if (enabled) detail::add_offer_constraint(raw, offer->constraint);
     }
     enabled_[p] = flag(enabled);
+  }
+
+  /// Whether the item at position `p` is enabled, its constraint aside: every port of its
+  /// connector offers and the connector's value is allowed, or its internal port offers.
+  [[gnu::always_inline]] bool offered(std::uint32_t p) {
+    if (p >= connector_count_) return offers_[t_.internal[p - connector_count_].offer].has_value();
+    const FlatTables::Connector& c = t_.connectors[p];
+    for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
+      if (!offers_[t_.ports[i].offer]) return false;
+    }
+    return value_allowed(c);
   }
 
   /// Runtime::connector_code_allows: the connector's data copied into its value, the guard, then

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bipc/ir/clock_guard.h"
 #include "bipc/ir/state_change.h"
 
 namespace smcbip::engines {
@@ -209,6 +210,18 @@ void index_stochastic_ports(const System& system, FlatTables& tables) {
   }
 }
 
+/// FlatTables::lazy_unbounded: the transitions of every atom's type are lazy and their guards
+/// read no clock.
+bool offers_lazy_unbounded(const System& system) {
+  return std::all_of(system.atoms.begin(), system.atoms.end(), [&](const auto& atom) {
+    const AtomType& type = system.atom_types[atom.type];
+    return std::all_of(
+        type.transitions.begin(), type.transitions.end(), [](const bipc::ir::Transition& tr) {
+          return tr.urgency == bipc::Urgency::Lazy && !bipc::ir::reads_clock(tr.guard);
+        });
+  });
+}
+
 /// Per atom type, the first of its transitions' entries in `changing`, which it fills.
 std::vector<std::uint32_t> index_changing_transitions(const System& system, FlatTables& tables) {
   std::vector<std::uint32_t> first;
@@ -258,6 +271,7 @@ std::optional<FlatTables> flat_tables(const System& system, const Layout& layout
   index_neighbours(tables);
   index_affected(tables);
   index_stochastic_ports(system, tables);
+  tables.lazy_unbounded = offers_lazy_unbounded(system);
   return tables;
 }
 

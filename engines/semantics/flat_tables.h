@@ -74,6 +74,9 @@ struct FlatTables {
   std::vector<std::uint8_t> changing;
   std::uint32_t offer_count = 0, value_data_size = 0;
   bool has_triggered = false;  // some connector is triggered
+  /// Every offer is lazy and holds at all dates: no transition guard reads a clock and every
+  /// transition is lazy. Each item's window is then every date from now on.
+  bool lazy_unbounded = false;
 
   std::size_t positions() const { return connectors.size() + internal.size(); }
 };

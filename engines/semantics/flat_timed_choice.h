@@ -44,6 +44,7 @@ class FlatTimedChoice {
     const FlatFlag* enabled = nullptr;
     const Constraint* raw = nullptr;
     const std::optional<std::pair<Index, Index>>* stochastic = nullptr;
+    bool lazy_unbounded = false;  // FlatTables::lazy_unbounded
   };
   /// The run's draws: `planner` (stochastic mode, else null) races planned dates.
   struct Run {
@@ -66,6 +67,7 @@ class FlatTimedChoice {
   /// `at_limit`, Beyond when a date cannot be drawn, else the item to fire.
   [[gnu::always_inline]] Choice choose(TimeValue now, bool at_limit, const Items& at,
                                        const Run& run) {
+    if (run.planner != nullptr && at.lazy_unbounded) return choose_lazy(at_limit, at, run);
     Interval waiting;
     const std::size_t listed = list(now, at, waiting);
     if (listed == 0) {
@@ -143,6 +145,63 @@ class FlatTimedChoice {
   }
 
   std::span<Listed> listed_items() { return {items_.data(), count_}; }
+
+  /// choose() in stochastic mode when every item is lazy and holds at all dates: no window is
+  /// cut, and every planned date lies in its item's window (from now on, as a drawn date does,
+  /// and a kept one, which lost a race won at now or later). One pass over the enabled positions
+  /// renews their plans, as race() does in the same order, and finds the earliest date; only a
+  /// tie is broken afterwards, with earliest_in_window's draws.
+  [[gnu::always_inline]] Choice choose_lazy(bool at_limit, const Items& at, const Run& run) {
+    std::uint32_t p = 0;
+    while (p < at.positions && at.enabled[p] == FlatFlag::Off) ++p;
+    if (p == at.positions) return {CompiledSteps::Outcome::Deadlock};
+    if (at_limit) return {CompiledSteps::Outcome::Limit};
+    ++generation_;
+    std::uint32_t chosen = p;
+    TimeValue best = kPlusInfinity;
+    bool tied = false;
+    try {
+      for (; p < at.positions; ++p) {
+        if (at.enabled[p] == FlatFlag::Off) continue;
+        DatePlanner::Plan& plan = plans_[p];
+        const auto stochastic = [&] { return at.stochastic[p]; };
+        if (!run.planner->renew(*run.runtime, plan, generation_, at.raw[p], stochastic, problem_)) {
+          return {CompiledSteps::Outcome::Beyond};
+        }
+        if (plan.date < best || p == chosen) {
+          best = plan.date;
+          chosen = p;
+        } else {
+          tied = tied || plan.date == best;
+        }
+      }
+    } catch (const CodeFault&) {
+      return {CompiledSteps::Outcome::Beyond};
+    }
+    if (tied) chosen = break_tie(at, *run.random);
+    DatePlanner::fired(plans_[chosen]);
+    return {CompiledSteps::Outcome::Fired, chosen, best};
+  }
+
+  /// The earliest enabled position as earliest_in_window chooses it, ties included: where a
+  /// later position ties with the earliest so far, a uniform choice among the tied ones.
+  std::uint32_t break_tie(const Items& at, RandomStream& random) {
+    std::uint32_t chosen = 0;
+    TimeValue best = kPlusInfinity;
+    std::uint64_t ties = 0;
+    for (std::uint32_t p = 0; p < at.positions; ++p) {
+      if (at.enabled[p] == FlatFlag::Off) continue;
+      const TimeValue d = plans_[p].date;
+      if (ties == 0 || d < best) {
+        best = d;
+        chosen = p;
+        ties = 1;
+      } else if (d == best && random.below(++ties) == 0) {
+        chosen = p;
+      }
+    }
+    return chosen;
+  }
 
   /// Scheduler::race over the listed items: DatePlanner::plan's kept or new dates, then the
   /// earliest in its window, or after replan_within_windows; false when a date cannot be drawn.
