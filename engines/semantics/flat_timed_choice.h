@@ -164,10 +164,12 @@ class FlatTimedChoice {
       for (; p < at.positions; ++p) {
         if (at.enabled[p] == FlatFlag::Off) continue;
         DatePlanner::Plan& plan = plans_[p];
-        const auto stochastic = [&] { return at.stochastic[p]; };
-        if (!run.planner->renew(*run.runtime, plan, generation_, at.raw[p], stochastic, problem_)) {
+        // DatePlanner::renew, whose constraints compare equal here: every item's is the whole
+        // time line, lazy. Drawn out of line, which leaves the loop its registers.
+        if (plan.seen + 1 != generation_ && !draw(plan, p, at, run)) {
           return {CompiledSteps::Outcome::Beyond};
         }
+        plan.seen = generation_;
         if (plan.date < best || p == chosen) {
           best = plan.date;
           chosen = p;
@@ -181,6 +183,17 @@ class FlatTimedChoice {
     if (tied) chosen = break_tie(at, *run.random);
     DatePlanner::fired(plans_[chosen]);
     return {CompiledSteps::Outcome::Fired, chosen, best};
+  }
+
+  /// A new date for the plan of the item at position `p`, as DatePlanner::renew draws one;
+  /// false when it cannot be drawn.
+  [[gnu::noinline]] bool draw(DatePlanner::Plan& plan, std::uint32_t p, const Items& at,
+                              const Run& run) {
+    if (!run.planner->draw_date(*run.runtime, at.stochastic[p], at.raw[p], plan.date, problem_)) {
+      return false;
+    }
+    plan.offered = at.raw[p];
+    return true;
   }
 
   /// The earliest enabled position as earliest_in_window chooses it, ties included: where a
