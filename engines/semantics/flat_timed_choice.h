@@ -156,6 +156,7 @@ class FlatTimedChoice {
     while (p < at.positions && at.enabled[p] == FlatFlag::Off) ++p;
     if (p == at.positions) return {CompiledSteps::Outcome::Deadlock};
     if (at_limit) return {CompiledSteps::Outcome::Limit};
+    if (draws_of_ != run.planner) index_fixed_draws(at, run);
     ++generation_;
     std::uint32_t chosen = p;
     TimeValue best = kPlusInfinity;
@@ -189,11 +190,25 @@ class FlatTimedChoice {
   /// false when it cannot be drawn.
   [[gnu::noinline]] bool draw(DatePlanner::Plan& plan, std::uint32_t p, const Items& at,
                               const Run& run) {
-    if (!run.planner->draw_date(*run.runtime, at.stochastic[p], at.raw[p], plan.date, problem_)) {
+    if (std::optional<DatePlanner::FixedDraw>& fixed = fixed_draws_[p]) {
+      if (!run.planner->draw_from_now(*run.runtime, *fixed, plan.date, problem_)) return false;
+    } else if (!run.planner->draw_date(*run.runtime, at.stochastic[p], at.raw[p], plan.date,
+                                       problem_)) {
       return false;
     }
     plan.offered = at.raw[p];
     return true;
+  }
+
+  /// Per position, the planner's FixedDraw of its @stochastic port, if it has one.
+  void index_fixed_draws(const Items& at, const Run& run) {
+    fixed_draws_.assign(at.positions, std::nullopt);
+    for (std::uint32_t p = 0; p < at.positions; ++p) {
+      if (const std::optional<std::pair<Index, Index>>& port = at.stochastic[p]) {
+        fixed_draws_[p] = run.planner->fixed_draw(*run.runtime, port->first, port->second);
+      }
+    }
+    draws_of_ = run.planner;
   }
 
   /// The earliest enabled position as earliest_in_window chooses it, ties included: where a
@@ -250,6 +265,9 @@ class FlatTimedChoice {
   std::vector<DatePlanner::Plan> plans_;  // per position, as DatePlanner keeps them per item
   std::uint64_t generation_ = 1;
   std::string problem_;  // a draw's error (the engines' replay reports it)
+  // The lazy race's draws: per position, from the planner draws_of_.
+  std::vector<std::optional<DatePlanner::FixedDraw>> fixed_draws_;
+  const DatePlanner* draws_of_ = nullptr;
 };
 
 }  // namespace smcbip::engines

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 #include "engines/api/compiled_model.h"
 
@@ -16,6 +17,15 @@ inline double clock_value_at(const ClockState& clock, TimeValue unit, TimeValue 
   return clock_value(clock, unit, at);
 }
 
+/// std::ceil(x), to the bit, without the library call the baseline x86-64 target makes of it
+/// (it has no rounding instruction): below 2^63 a double's whole part converts to an integer
+/// and back exactly, and one more is exact below 2^52, the only doubles with a fraction.
+inline double ceil_of(double x) {
+  if (!(x > 0.0 && x < 9.2e18)) return std::ceil(x);  // zeros keep their sign there
+  const double whole = static_cast<double>(static_cast<std::int64_t>(x));
+  return whole < x ? whole + 1.0 : whole;
+}
+
 /// The first date from `now` at which `clock` (of unit `unit` ns) shows `value` or more:
 /// `now` when it already does, +infinity when it never will (a stopped clock or a date past
 /// the end of time).
@@ -27,7 +37,7 @@ inline TimeValue clock_reaches(const ClockState& clock, TimeValue unit, TimeValu
   // Clocks are linear in the delay: value = now_value + rate * delay / unit.
   // Dividing by a rate of 1 is exact: skipped, as it costs as much as the rest.
   const double scaled = (value - now_value) * static_cast<double>(unit);
-  const double delay = std::ceil(clock.rate == 1.0 ? scaled : scaled / clock.rate);
+  const double delay = ceil_of(clock.rate == 1.0 ? scaled : scaled / clock.rate);
   if (delay >= static_cast<double>(kPlusInfinity - now)) return kPlusInfinity;
   return now + static_cast<TimeValue>(delay);
 }

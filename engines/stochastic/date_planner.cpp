@@ -240,4 +240,17 @@ std::string DatePlanner::port_name(const Runtime& runtime, Index atom, Index por
          system_.atom_types[system_.atoms[atom].type].ports[port].name;
 }
 
+std::optional<DatePlanner::FixedDraw> DatePlanner::fixed_draw(const Runtime& runtime, Index atom,
+                                                              Index port) {
+  std::optional<Fixed>& fixed = fixed_distributions_[first_port_[atom] + port];
+  if (!fixed) return std::nullopt;
+  FixedDraw draw;
+  draw.fixed = &*fixed;
+  draw.clock = runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
+  draw.unit = runtime.layout().clock_units[draw.clock];
+  draw.atom = atom;
+  draw.port = port;
+  return draw;
+}
+
 }  // namespace smcbip::engines

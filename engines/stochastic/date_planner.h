@@ -110,6 +110,15 @@ class DatePlanner {
     }
     return draw_made(runtime, atom, port, window, date, error);
   }
+  /// What draws the dates of an item whose @stochastic port has a fixed distribution (its
+  /// parameters are valid numbers): that distribution and the port's clock.
+  class FixedDraw;
+  /// The FixedDraw of atom port (atom, port), if its distribution is fixed.
+  std::optional<FixedDraw> fixed_draw(const Runtime& runtime, Index atom, Index port);
+  /// draw_date for an item of `draw` offered at all dates from now on, lazily.
+  [[gnu::always_inline]] bool draw_from_now(Runtime& runtime, FixedDraw& draw, TimeValue& date,
+                                            std::string& error);
+
   /// A date for an item without a @stochastic port: its window's first date when eager, else
   /// uniform in a bounded window, exponential after an unbounded one's first date.
   TimeValue draw_timed(bipc::Urgency urgency, const Interval& window);
@@ -223,5 +232,30 @@ class DatePlanner {
   // Likewise, the clock of its annotation (0 without one): read on every draw.
   std::vector<Index> port_clocks_;
 };
+
+class DatePlanner::FixedDraw {
+ private:
+  friend class DatePlanner;
+  Fixed* fixed = nullptr;
+  std::size_t clock = 0;  // the port's clock, in the state's clocks
+  TimeValue unit = 0;
+  Index atom = 0, port = 0;
+};
+
+inline bool DatePlanner::draw_from_now(Runtime& runtime, FixedDraw& draw, TimeValue& date,
+                                       std::string& error) {
+  // draw_from over the window [now, +infinity[, whose first date is now.
+  const TimeValue now = runtime.state().now;
+  const ClockState& clock = runtime.state().clocks[draw.clock];
+  Fixed& fixed = *draw.fixed;
+  const double lower = clock_value_at(clock, draw.unit, now);
+  double sample = 0.0;
+  if (!fixed.distribution.sample_above(
+          lower, random_, [&] { return fixed.masses(lower); }, sample)) {
+    return missed_support(runtime, draw.atom, draw.port, fixed.distribution, lower, error);
+  }
+  date = std::max(now, clock_reaches(clock, draw.unit, now, sample));
+  return true;
+}
 
 }  // namespace smcbip::engines
