@@ -1,6 +1,8 @@
 #include "monitors/online/state_program.h"
 
 #include <algorithm>
+#include <limits>
+#include <utility>
 
 namespace smcbip::monitors::online {
 namespace {
@@ -65,9 +67,21 @@ StateProgram::StateProgram(const Formula& f, bool negated, const Bindings& bindi
   }
   if (form_ != Code::Number) {
     for (const Op& op : ops_) {
-      if (op.code == Code::Compare) compares_.push_back(op);
+      if (op.code != Code::Compare) continue;
+      compares_.push_back(op);
+      compares_.back().holds_when = holds_when_of(op.compare);
     }
   }
+}
+
+std::uint8_t StateProgram::holds_when_of(Code code) {
+  std::uint8_t mask = 0;
+  // One pair of values in each order: apply() says which orders the comparison holds in.
+  const double unordered = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [x, y] : {std::pair{0.0, 1.0}, {1.0, 1.0}, {1.0, 0.0}, {unordered, 1.0}}) {
+    if (apply(code, Op{}, x, y) != 0) mask |= static_cast<std::uint8_t>(order_bit(x, y));
+  }
+  return mask;
 }
 
 bool StateProgram::joins_comparisons(std::size_t n, Code junction) const {

@@ -57,6 +57,9 @@ class StateProgram {
     Code load = Code::Number;    // Compare: what is loaded (a load code)
     Code compare = Code::Equal;  // Compare: Less ... NotEqual
     std::size_t offset = 0;      // Int, Bool, Float, Place: where a bound reader finds it
+    /// A Compare of compares_: the orders of the load to `number` it holds in, a bit each
+    /// (holds_when_order).
+    std::uint8_t holds_when = 0;
   };
   /// The kind of a data slot as the model declares it (Int also for strings and externs).
   enum class DataKind : std::uint8_t { Int, Bool, Float };
@@ -106,8 +109,24 @@ class StateProgram {
   /// The formula's truth in a state. `read.load(code, op)` gives the value of the load `code`
   /// (Data, Int, Bool, Float, Place, Name) that `op` describes; `initial`: the state is the
   /// run's first.
+  /// Inline for comparisons joined by && or || (the most frequent formulas), whose loop needs
+  /// no stack; the general program runs out of line.
   template <class Reader>
-  bool holds(const Reader& read, bool initial) const;
+  [[gnu::always_inline]] bool holds(const Reader& read, bool initial) const {
+    if (form_ == Code::And) {
+      for (const Op& op : compares_) {
+        if (!compare(read, op)) return false;
+      }
+      return true;
+    }
+    if (form_ == Code::Or) {
+      for (const Op& op : compares_) {
+        if (compare(read, op)) return true;
+      }
+      return false;
+    }
+    return holds_postfix(read, initial);
+  }
 
   static constexpr std::size_t kMaxDepth = 32;
 
@@ -118,11 +137,22 @@ class StateProgram {
   static double apply(Code code, const Op& op, double x, double y);
   static bool is_load(Code code);
 
+  /// holds() for any program: its postfix form over a stack.
+  template <class Reader>
+  [[gnu::noinline]] bool holds_postfix(const Reader& read, bool initial) const;
+
   /// Whether the first `n` instructions are comparisons joined by `junction` only.
   bool joins_comparisons(std::size_t n, Code junction) const;
+  /// The bit of Op::holds_when for the order of x to y: less, equal, greater, unordered (NaN).
+  static unsigned order_bit(double x, double y) {
+    return x < y ? 1u : x == y ? 2u : x > y ? 4u : 8u;
+  }
+  /// Op::holds_when of the comparison `code` (Less ... NotEqual), as apply() decides it.
+  static std::uint8_t holds_when_of(Code code);
+  /// A comparison of compares_, without a branch on its operator.
   template <class Reader>
   static bool compare(const Reader& read, const Op& op) {
-    return apply(op.compare, op, read.load(op.load, op), op.number) != 0;
+    return (op.holds_when & order_bit(read.load(op.load, op), op.number)) != 0;
   }
 
   std::vector<Op> ops_;
@@ -135,19 +165,7 @@ class StateProgram {
 };
 
 template <class Reader>
-bool StateProgram::holds(const Reader& read, bool initial) const {
-  if (form_ == Code::And) {
-    for (const Op& op : compares_) {
-      if (!compare(read, op)) return false;
-    }
-    return true;
-  }
-  if (form_ == Code::Or) {
-    for (const Op& op : compares_) {
-      if (compare(read, op)) return true;
-    }
-    return false;
-  }
+bool StateProgram::holds_postfix(const Reader& read, bool initial) const {
   std::array<double, kMaxDepth> stack;
   std::size_t top = 0;  // the number of values on the stack
   for (const Op& op : ops_) {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
@@ -236,6 +237,36 @@ const std::string& shifted(const std::string& text) {
     }
   }
   return result;
+}
+
+TEST(OperatorMonitor, ComparisonsOrderValuesAsTheGeneralMonitorDoes) {
+  // Each comparison over a value below, at and above its number, and NaN (unordered: only !=
+  // holds), alone and joined by && and ||.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  int compared = 0;
+  for (const char* op : {"<", "<=", ">", ">=", "==", "!="}) {
+    for (const std::string& form : {std::string("x OP 1"), std::string("x OP 1 && x OP 1"),
+                                    std::string("x OP 1 || p OP 2")}) {
+      std::string state = form;
+      for (std::size_t at; (at = state.find("OP")) != std::string::npos;) state.replace(at, 2, op);
+      const std::string text = "P=? [ F (" + state + ") ]";
+      const ParsedProperties parsed = parse_properties(text, "q.mtl");
+      ASSERT_TRUE(parsed.ok()) << text;
+      const Formula& formula = *parsed.file.queries.at(0).formula;
+      ASSERT_TRUE(OperatorMonitor::accepts(formula)) << text;
+      OperatorMonitor fast(formula, kTicks, {}, {});
+      OnlineMonitor general(formula, kTicks, {}, {});
+      for (double x : {0.0, 1.0, 2.0, nan}) {
+        Trace trace;
+        trace.steps.push_back({0, {{"p", nan}, {"q", 0}, {"x", x}}});
+        fast.reset();
+        general.reset();
+        EXPECT_EQ(judge(fast, trace), judge(general, trace)) << text << " at x = " << x;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 6 * 3 * 4);
 }
 
 TEST(OperatorMonitor, TheComparisonTellsBoundsOneTickApart) {
