@@ -2,7 +2,7 @@
 // (FlatTables::lazy_unbounded): one pass renews the plans and finds the earliest date, and a tie
 // is broken afterwards with the scheduler's draws. The optimised engine (the step path) must make
 // the reference engine's runs (its scheduler) step for step, on a model whose dates tie often:
-// exponential delays of 1 and 2 ns, rounded up to whole nanoseconds, so that most dates lie
+// exponential delays of a few ns, rounded up to whole nanoseconds, so that most dates lie
 // 1 ns ahead.
 #include <gtest/gtest.h>
 
@@ -23,8 +23,9 @@ namespace smcbip::engines {
 namespace {
 
 // Three walkers; `up` keeps its clock running (a newly enabled `up` draws truncated at the
-// clock's value), `down` resets it; `meet` joins two walkers in a rendezvous whose date the
-// stochastic port of one side draws.
+// clock's value), `down` resets it and draws from a mean given by a parameter (a distribution
+// made for each draw), `rest` has no @stochastic port (the planner's exponential of 1 ms);
+// `meet` joins two walkers in a rendezvous whose date the stochastic port of one side draws.
 constexpr const char* kTiesModel = R"(package ties
   port type P()
   connector type Pair(P a, P b)
@@ -35,17 +36,19 @@ constexpr const char* kTiesModel = R"(package ties
     clock x unit nanosecond
     @stochastic(dist="exponential", clk=x, param="1")
     port P up()
-    @stochastic(dist="exponential", clk=x, param="2")
+    @stochastic(dist="exponential", clk=x, param="m")
     port P down()
     @stochastic(dist="exponential", clk=x, param="1")
     export port P meet()
     export port P greet()
+    port P rest()
     place S
     initial to S do { n = 0; x = 0; }
     on up from S to S provided (n < m) do { n = n + 1; }
     on down from S to S provided (n > 0) do { n = n - 1; x = 0; }
     on meet from S to S provided (n == 1) do { n = 0; }
     on greet from S to S provided (n == 2) do { n = 0; x = 0; }
+    on rest from S to S provided (n == 0) do { x = 0; }
   end
   compound type Root()
     component Walker a(3)
