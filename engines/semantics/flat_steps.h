@@ -29,6 +29,7 @@
 #include "engines/semantics/compiled_steps.h"
 #include "engines/semantics/detail/runtime_shared.h"
 #include "engines/semantics/enabled_positions.h"
+#include "engines/semantics/flat_connector_code.h"
 #include "engines/semantics/flat_tables.h"
 #include "engines/semantics/flat_timed_choice.h"
 #include "engines/semantics/item_race.h"
@@ -49,11 +50,11 @@ class FlatSteps final : public CompiledSteps {
  public:
   FlatSteps(Code& code, const bipc::ir::System& system, const Layout& layout, FlatTables tables)
       : code_(code),
-        system_(system),
         layout_(layout),
         t_(std::move(tables)),
         connector_count_(static_cast<std::uint32_t>(t_.connectors.size())),
-        position_count_(static_cast<std::uint32_t>(t_.positions())) {
+        position_count_(static_cast<std::uint32_t>(t_.positions())),
+        connector_code_(code, system, t_) {
     offers_.resize(t_.offer_count);
     value_data_.resize(t_.value_data_size);
     touched_.assign(t_.atoms.size(), 0);
@@ -89,8 +90,8 @@ class FlatSteps final : public CompiledSteps {
     if (at_limit) return Outcome::Limit;
     const SharedWindowChoice choice =
         shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    return fire_and_check<false>(static_cast<std::uint32_t>(index_.find(choice.chosen)),
-                                 choice.date, info);
+    return fire_and_check<Items::Untimed>(static_cast<std::uint32_t>(index_.find(choice.chosen)),
+                                          choice.date, info);
   }
 
   bool step_kept_state() const override { return kept_; }
@@ -156,17 +157,38 @@ class FlatSteps final : public CompiledSteps {
 
   /// A step on a timed layout or in stochastic mode (FlatTimedChoice).
   Outcome timed_step(bool at_limit, StepInfo& info) {
-    const FlatTimedChoice::Choice choice = timed_choice_.choose(
-        state_->now, at_limit,
-        {position_count_, enabled_.data(), raw_.data(), t_.stochastic.data(), t_.lazy_unbounded},
-        {runtime_, random_, planner_, asap_, first_enabled_});
+    if (planner_ != nullptr && t_.lazy_unbounded) return lazy_step(at_limit, info);
+    const FlatTimedChoice::Choice choice =
+        timed_choice_.choose(state_->now, at_limit, items(), run_draws());
     if (choice.outcome != Outcome::Fired) return choice.outcome;
-    return fire_and_check<true>(choice.position, choice.date, info);
+    return fire_and_check<Items::Timed>(choice.position, choice.date, info);
   }
+
+  /// timed_step in stochastic mode when every offer is lazy at all dates: the race in one pass
+  /// (FlatTimedChoice::choose_lazy), the items recomputed without constraints. Out of line: the
+  /// other modes' step keeps its registers.
+  [[gnu::noinline]] Outcome lazy_step(bool at_limit, StepInfo& info) {
+    const FlatTimedChoice::Choice choice =
+        timed_choice_.choose_lazy(at_limit, items(), run_draws());
+    if (choice.outcome != Outcome::Fired) return choice.outcome;
+    return fire_and_check<Items::Lazy>(choice.position, choice.date, info);
+  }
+
+  FlatTimedChoice::Items items() const {
+    return {position_count_, enabled_.data(), raw_.data(), t_.stochastic.data()};
+  }
+  FlatTimedChoice::Run run_draws() const {
+    return {runtime_, random_, planner_, asap_, first_enabled_};
+  }
+
+  /// How a step recomputes the items its firing touched: whether they are enabled (and eager),
+  /// with their constraints too, or, when every offer is lazy at all dates (the constraints
+  /// stay the whole time line), whether they are enabled alone.
+  enum class Items { Untimed, Timed, Lazy };
 
   /// Fires the item at position `p` at `date`, then recomputes the items of the atoms it
   /// touched. Instantiated per mode, so that each has its recomputation inline.
-  template <bool Timed>
+  template <Items Mode>
   Outcome fire(std::uint32_t p, TimeValue date, StepInfo& info) {
     state_->now = date;
     info = StepInfo{};
@@ -196,8 +218,10 @@ class FlatSteps final : public CompiledSteps {
         const std::uint32_t* q = t_.affected.data() + t_.first_affected[p];
         const std::uint32_t* const end = t_.affected.data() + t_.first_affected[p + 1];
         for (; q != end; ++q) {
-          if constexpr (Timed) {
+          if constexpr (Mode == Items::Timed) {
             recompute_timed(*q);
+          } else if constexpr (Mode == Items::Lazy) {
+            enabled_[*q] = flag(offered(*q));
           } else {
             recompute_untimed(*q);
           }
@@ -211,12 +235,12 @@ class FlatSteps final : public CompiledSteps {
 
   /// fire(), and under Run::checks_kept_state whether it kept the bytes it may write. The
   /// check stays out of fire(), whose code the runs without it would otherwise pay for.
-  template <bool Timed>
+  template <Items Mode>
   Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
     // One call of fire(): inlined here, as it was into the step.
     const bool compares = checks_kept_ && !written_->surely_changed(p, offers_.data());
     if (compares) written_->remember(*state_, p);
-    const Outcome outcome = fire<Timed>(p, date, info);
+    const Outcome outcome = fire<Mode>(p, date, info);
     kept_ = compares && written_->kept(*state_, p);
     return outcome;
   }
@@ -237,18 +261,6 @@ class FlatSteps final : public CompiledSteps {
     }
   }
 
-  /// What connector code finds its port parameters through (Frame::port_slot).
-  struct PortContext {
-    FlatSteps* steps;
-    const FlatTables::Connector* connector;
-  };
-  static Val* port_slot(const void* context, Index port, std::uint16_t arg) {
-    const auto& c = *static_cast<const PortContext*>(context);
-    const FlatTables& t = c.steps->t_;
-    const FlatTables::Port& bound = t.ports[c.connector->first_port + port];
-    return &c.steps->state_->data[t.param_slots[bound.first_param + arg]];
-  }
-
   Frame atom_frame(Index a) { return atom_frame(t_.atoms[a]); }
   Frame atom_frame(const FlatTables::Atom& atom) {
     Frame f;
@@ -258,19 +270,6 @@ class FlatSteps final : public CompiledSteps {
     f.clock_units = layout_.clock_units.data() + atom.clocks;
     f.now = state_->now;
     return f;
-  }
-
-  Frame connector_frame(const FlatTables::Connector& c, const PortContext& context) {
-    Frame f;
-    f.connector_data = value_data_.data() + c.value_data;
-    f.port_slot = &port_slot;
-    f.port_context = &context;
-    f.now = state_->now;
-    return f;
-  }
-
-  const bipc::ir::InteractionCode& interaction(const FlatTables::Connector& c) const {
-    return system_.connector_types[c.type].interactions[static_cast<std::size_t>(c.code)];
   }
 
   /// Runtime::update_atom for a covered atom: its offers afresh; false on a non-deterministic
@@ -326,11 +325,8 @@ class FlatSteps final : public CompiledSteps {
 
   /// InteractionExecution::execute_in_sequence for a rendezvous: `down` over the value, its data
   /// written back, then the ports in parameter order.
-  bool fire_connector(const FlatTables::Connector& c) {
-    if (c.has_down) {
-      const PortContext context{this, &c};
-      code_.execute(interaction(c).down, connector_frame(c, context));
-    }
+  [[gnu::always_inline]] bool fire_connector(const FlatTables::Connector& c) {
+    if (c.has_down) connector_code_.down(c, *state_, value_data_.data());
     std::copy_n(value_data_.begin() + c.value_data, c.data_size, state_->data.begin() + c.data);
     for (std::uint32_t i = c.first_port; i < c.ports_end; ++i) {
       if (c.triggered && chosen_[i] == Flag::Off) continue;
@@ -400,11 +396,6 @@ class FlatSteps final : public CompiledSteps {
   /// (Runtime::add_choice); a connector whose ports' windows do not meet is not enabled, and
   /// its guard not run (Runtime::keep_value_if_allowed).
   [[gnu::always_inline]] void recompute_timed(std::uint32_t p) {
-    // Every constraint stays the whole time line, lazy, as compute_start() left it.
-    if (t_.lazy_unbounded) {
-      enabled_[p] = flag(offered(p));
-      return;
-    }
     // Narrowed in place, field by field: a Constraint built on the stack and copied whole
     // stalled on store forwarding.
     Constraint& raw = raw_[p];
@@ -445,25 +436,15 @@ class FlatSteps final : public CompiledSteps {
   /// Inline for a connector without data or code (the check), out of line otherwise.
   [[gnu::always_inline]] bool value_allowed(const FlatTables::Connector& c) {
     if (c.data_size == 0 && !c.guarded) return true;
-    return value_allowed_by_code(c);
-  }
-  bool value_allowed_by_code(const FlatTables::Connector& c) {
-    std::copy_n(state_->data.begin() + c.data, c.data_size, value_data_.begin() + c.value_data);
-    if (!c.guarded) return true;
-    const PortContext context{this, &c};
-    const Frame f = connector_frame(c, context);
-    const bipc::ir::InteractionCode& code = interaction(c);
-    if (!code.guard.empty() && !code_.evaluate(code.guard, f).b) return false;
-    code_.execute(code.up, f);
-    return true;
+    return connector_code_.allowed(c, *state_, value_data_.data());
   }
 
   Code& code_;
-  const bipc::ir::System& system_;
   const Layout& layout_;
   const FlatTables t_;
   // t_'s connectors and positions, counted once: a vector's size divides by its element's.
   const std::uint32_t connector_count_, position_count_;
+  const FlatConnectorCode<Code> connector_code_;  // over t_
   Runtime* runtime_ = nullptr;
   RunState* state_ = nullptr;
   RandomStream* random_ = nullptr;

@@ -44,7 +44,6 @@ class FlatTimedChoice {
     const FlatFlag* enabled = nullptr;
     const Constraint* raw = nullptr;
     const std::optional<std::pair<Index, Index>>* stochastic = nullptr;
-    bool lazy_unbounded = false;  // FlatTables::lazy_unbounded
   };
   /// The run's draws: `planner` (stochastic mode, else null) races planned dates.
   struct Run {
@@ -67,7 +66,6 @@ class FlatTimedChoice {
   /// `at_limit`, Beyond when a date cannot be drawn, else the item to fire.
   [[gnu::always_inline]] Choice choose(TimeValue now, bool at_limit, const Items& at,
                                        const Run& run) {
-    if (run.planner != nullptr && at.lazy_unbounded) return choose_lazy(at_limit, at, run);
     Interval waiting;
     const std::size_t listed = list(now, at, waiting);
     if (listed == 0) {
@@ -88,6 +86,46 @@ class FlatTimedChoice {
       if (!choice) return {CompiledSteps::Outcome::Timelock};
     }
     return {CompiledSteps::Outcome::Fired, items_[choice->first].position, choice->second};
+  }
+
+  /// choose() in stochastic mode (`run.planner`) when every item is lazy and holds at all dates: no
+  /// window is cut, and every planned date lies in its item's window (from now on, as a drawn date
+  /// does, and a kept one, which lost a race won at now or later). One pass over the enabled
+  /// positions renews their plans, as race() does in the same order, and finds the earliest date;
+  /// only a tie is broken afterwards, with earliest_in_window's draws.
+  [[gnu::always_inline]] Choice choose_lazy(bool at_limit, const Items& at, const Run& run) {
+    std::uint32_t p = 0;
+    while (p < at.positions && at.enabled[p] == FlatFlag::Off) ++p;
+    if (p == at.positions) return {CompiledSteps::Outcome::Deadlock};
+    if (at_limit) return {CompiledSteps::Outcome::Limit};
+    if (draws_of_ != run.planner) index_fixed_draws(at, run);
+    ++generation_;
+    std::uint32_t chosen = p;
+    TimeValue best = kPlusInfinity;
+    bool tied = false;
+    try {
+      for (; p < at.positions; ++p) {
+        if (at.enabled[p] == FlatFlag::Off) continue;
+        DatePlanner::Plan& plan = plans_[p];
+        // DatePlanner::renew, whose constraints compare equal here: every item's is the whole
+        // time line, lazy. Drawn out of line, which leaves the loop its registers.
+        if (plan.seen + 1 != generation_ && !draw(plan, p, at, run)) {
+          return {CompiledSteps::Outcome::Beyond};
+        }
+        plan.seen = generation_;
+        if (plan.date < best || p == chosen) {
+          best = plan.date;
+          chosen = p;
+        } else {
+          tied = tied || plan.date == best;
+        }
+      }
+    } catch (const CodeFault&) {
+      return {CompiledSteps::Outcome::Beyond};
+    }
+    if (tied) chosen = break_tie(at, *run.random);
+    DatePlanner::fired(plans_[chosen]);
+    return {CompiledSteps::Outcome::Fired, chosen, best};
   }
 
  private:
@@ -145,46 +183,6 @@ class FlatTimedChoice {
   }
 
   std::span<Listed> listed_items() { return {items_.data(), count_}; }
-
-  /// choose() in stochastic mode when every item is lazy and holds at all dates: no window is
-  /// cut, and every planned date lies in its item's window (from now on, as a drawn date does,
-  /// and a kept one, which lost a race won at now or later). One pass over the enabled positions
-  /// renews their plans, as race() does in the same order, and finds the earliest date; only a
-  /// tie is broken afterwards, with earliest_in_window's draws.
-  [[gnu::always_inline]] Choice choose_lazy(bool at_limit, const Items& at, const Run& run) {
-    std::uint32_t p = 0;
-    while (p < at.positions && at.enabled[p] == FlatFlag::Off) ++p;
-    if (p == at.positions) return {CompiledSteps::Outcome::Deadlock};
-    if (at_limit) return {CompiledSteps::Outcome::Limit};
-    if (draws_of_ != run.planner) index_fixed_draws(at, run);
-    ++generation_;
-    std::uint32_t chosen = p;
-    TimeValue best = kPlusInfinity;
-    bool tied = false;
-    try {
-      for (; p < at.positions; ++p) {
-        if (at.enabled[p] == FlatFlag::Off) continue;
-        DatePlanner::Plan& plan = plans_[p];
-        // DatePlanner::renew, whose constraints compare equal here: every item's is the whole
-        // time line, lazy. Drawn out of line, which leaves the loop its registers.
-        if (plan.seen + 1 != generation_ && !draw(plan, p, at, run)) {
-          return {CompiledSteps::Outcome::Beyond};
-        }
-        plan.seen = generation_;
-        if (plan.date < best || p == chosen) {
-          best = plan.date;
-          chosen = p;
-        } else {
-          tied = tied || plan.date == best;
-        }
-      }
-    } catch (const CodeFault&) {
-      return {CompiledSteps::Outcome::Beyond};
-    }
-    if (tied) chosen = break_tie(at, *run.random);
-    DatePlanner::fired(plans_[chosen]);
-    return {CompiledSteps::Outcome::Fired, chosen, best};
-  }
 
   /// A new date for the plan of the item at position `p`, as DatePlanner::renew draws one;
   /// false when it cannot be drawn.
