@@ -71,8 +71,8 @@ class FlatSteps final : public CompiledSteps {
     first_enabled_ = run.first_enabled;
     timed_ = planner_ != nullptr || !layout_.untimed;
     if (timed_ && t_.has_triggered) return false;
-    checks_kept_ = run.checks_kept_state;
-    if (checks_kept_ && !written_) written_.emplace(t_);
+    checks_kept_ = false;
+    if (run.checks_kept_state) check_kept_state();
     timed_choice_.new_run(t_.positions());
     if (run.kept_start && start_ && start_->timed == timed_) {
       restore(*start_);
@@ -90,8 +90,8 @@ class FlatSteps final : public CompiledSteps {
     if (at_limit) return Outcome::Limit;
     const SharedWindowChoice choice =
         shared_window_.choose(n, state_->now, eager_count_ == 0, asap_, first_enabled_, *random_);
-    return fire_and_check<Items::Untimed>(static_cast<std::uint32_t>(index_.find(choice.chosen)),
-                                          choice.date, info);
+    return fire_and_check<Recompute::Untimed>(
+        static_cast<std::uint32_t>(index_.find(choice.chosen)), choice.date, info);
   }
 
   bool step_kept_state() const override { return kept_; }
@@ -161,7 +161,7 @@ class FlatSteps final : public CompiledSteps {
     const FlatTimedChoice::Choice choice =
         timed_choice_.choose(state_->now, at_limit, items(), run_draws());
     if (choice.outcome != Outcome::Fired) return choice.outcome;
-    return fire_and_check<Items::Timed>(choice.position, choice.date, info);
+    return fire_and_check<Recompute::Timed>(choice.position, choice.date, info);
   }
 
   /// timed_step in stochastic mode when every offer is lazy at all dates: the race in one pass
@@ -171,7 +171,7 @@ class FlatSteps final : public CompiledSteps {
     const FlatTimedChoice::Choice choice =
         timed_choice_.choose_lazy(at_limit, items(), run_draws());
     if (choice.outcome != Outcome::Fired) return choice.outcome;
-    return fire_and_check<Items::Lazy>(choice.position, choice.date, info);
+    return fire_and_check<Recompute::Lazy>(choice.position, choice.date, info);
   }
 
   FlatTimedChoice::Items items() const {
@@ -184,11 +184,11 @@ class FlatSteps final : public CompiledSteps {
   /// How a step recomputes the items its firing touched: whether they are enabled (and eager),
   /// with their constraints too, or, when every offer is lazy at all dates (the constraints
   /// stay the whole time line), whether they are enabled alone.
-  enum class Items { Untimed, Timed, Lazy };
+  enum class Recompute { Untimed, Timed, Lazy };
 
   /// Fires the item at position `p` at `date`, then recomputes the items of the atoms it
   /// touched. Instantiated per mode, so that each has its recomputation inline.
-  template <Items Mode>
+  template <Recompute Mode>
   Outcome fire(std::uint32_t p, TimeValue date, StepInfo& info) {
     state_->now = date;
     info = StepInfo{};
@@ -218,9 +218,9 @@ class FlatSteps final : public CompiledSteps {
         const std::uint32_t* q = t_.affected.data() + t_.first_affected[p];
         const std::uint32_t* const end = t_.affected.data() + t_.first_affected[p + 1];
         for (; q != end; ++q) {
-          if constexpr (Mode == Items::Timed) {
+          if constexpr (Mode == Recompute::Timed) {
             recompute_timed(*q);
-          } else if constexpr (Mode == Items::Lazy) {
+          } else if constexpr (Mode == Recompute::Lazy) {
             enabled_[*q] = flag(offered(*q));
           } else {
             recompute_untimed(*q);
@@ -235,7 +235,7 @@ class FlatSteps final : public CompiledSteps {
 
   /// fire(), and under Run::checks_kept_state whether it kept the bytes it may write. The
   /// check stays out of fire(), whose code the runs without it would otherwise pay for.
-  template <Items Mode>
+  template <Recompute Mode>
   Outcome fire_and_check(std::uint32_t p, TimeValue date, StepInfo& info) {
     // One call of fire(): inlined here, as it was into the step.
     const bool compares = checks_kept_ && !written_->surely_changed(p, offers_.data());

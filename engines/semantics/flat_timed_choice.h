@@ -209,24 +209,19 @@ class FlatTimedChoice {
     draws_of_ = run.planner;
   }
 
-  /// The earliest enabled position as earliest_in_window chooses it, ties included: where a
-  /// later position ties with the earliest so far, a uniform choice among the tied ones.
+  /// The enabled position earliest_in_window chooses among their planned dates, ties
+  /// included (every date lies in its window here).
   std::uint32_t break_tie(const Items& at, RandomStream& random) {
-    std::uint32_t chosen = 0;
-    TimeValue best = kPlusInfinity;
-    std::uint64_t ties = 0;
+    std::size_t n = 0;
     for (std::uint32_t p = 0; p < at.positions; ++p) {
       if (at.enabled[p] == FlatFlag::Off) continue;
-      const TimeValue d = plans_[p].date;
-      if (ties == 0 || d < best) {
-        best = d;
-        chosen = p;
-        ties = 1;
-      } else if (d == best && random.below(++ties) == 0) {
-        chosen = p;
-      }
+      items_[n].position = p;
+      items_[n++].date = plans_[p].date;
     }
-    return chosen;
+    const Interval all = Interval::all();
+    const auto window = [&](std::size_t) -> const Interval& { return all; };
+    const auto date = [&](std::size_t i) { return items_[i].date; };
+    return items_[earliest_in_window(n, window, date, random)->first].position;
   }
 
   /// Scheduler::race over the listed items: DatePlanner::plan's kept or new dates, then the

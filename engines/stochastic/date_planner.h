@@ -173,16 +173,24 @@ class DatePlanner {
                                         std::string& error) {
     const std::size_t slot =
         runtime.layout().atom_clocks[atom] + port_clocks_[first_port_[atom] + port];
+    return draw_on_clock(runtime, slot, runtime.layout().clock_units[slot], atom, port,
+                         distribution, fixed, window.first(), date, error);
+  }
+  /// draw_from on the port's clock `slot` (of unit `unit` ns), from the window's first date
+  /// `first` on.
+  [[gnu::always_inline]] bool draw_on_clock(Runtime& runtime, std::size_t slot, TimeValue unit,
+                                            Index atom, Index port,
+                                            const DateDistribution& distribution, Fixed* fixed,
+                                            TimeValue first, TimeValue& date, std::string& error) {
     const ClockState& clock = runtime.state().clocks[slot];
-    const TimeValue unit = runtime.layout().clock_units[slot];
-    const double lower = clock_value_at(clock, unit, window.first());
+    const double lower = clock_value_at(clock, unit, first);
     double sample = 0.0;
     if (!distribution.sample_above(
             lower, random_,
             [&] { return fixed ? fixed->masses(lower) : distribution.masses(lower); }, sample)) {
       return missed_support(runtime, atom, port, distribution, lower, error);
     }
-    date = std::max(window.first(), clock_reaches(clock, unit, runtime.state().now, sample));
+    date = std::max(first, clock_reaches(clock, unit, runtime.state().now, sample));
     return true;
   }
   /// draw_from's error when the clock is beyond every date of the distribution: false.
@@ -245,17 +253,8 @@ class DatePlanner::FixedDraw {
 inline bool DatePlanner::draw_from_now(Runtime& runtime, FixedDraw& draw, TimeValue& date,
                                        std::string& error) {
   // draw_from over the window [now, +infinity[, whose first date is now.
-  const TimeValue now = runtime.state().now;
-  const ClockState& clock = runtime.state().clocks[draw.clock];
-  Fixed& fixed = *draw.fixed;
-  const double lower = clock_value_at(clock, draw.unit, now);
-  double sample = 0.0;
-  if (!fixed.distribution.sample_above(
-          lower, random_, [&] { return fixed.masses(lower); }, sample)) {
-    return missed_support(runtime, draw.atom, draw.port, fixed.distribution, lower, error);
-  }
-  date = std::max(now, clock_reaches(clock, draw.unit, now, sample));
-  return true;
+  return draw_on_clock(runtime, draw.clock, draw.unit, draw.atom, draw.port,
+                       draw.fixed->distribution, draw.fixed, runtime.state().now, date, error);
 }
 
 }  // namespace smcbip::engines

@@ -143,9 +143,10 @@ class DateDistribution {
     return x;
   }
   /// As above, the date written to `x`, false for nullopt: a caller on the hot path stores no
-  /// optional, whose flag and value the processor could not forward to a whole read.
+  /// optional, whose flag and value the processor could not forward to a whole read. Always
+  /// inline: the draw of every step of a Markovian model.
   template <class MassesAt>
-  bool sample_above(double lower, RandomStream& random, MassesAt masses_at, double& x) const {
+  [[gnu::always_inline]] bool sample_above(double lower, RandomStream& random, MassesAt masses_at, double& x) const {
     const double u = random.uniform01_open();
     x = inverse_of_uniform(u);
     if (x > lower) return true;

@@ -58,7 +58,7 @@ class StateProgram {
     Code compare = Code::Equal;  // Compare: Less ... NotEqual
     std::size_t offset = 0;      // Int, Bool, Float, Place: where a bound reader finds it
     /// A Compare of compares_: the orders of the load to `number` it holds in, a bit each
-    /// (holds_when_order).
+    /// (order_bit).
     std::uint8_t holds_when = 0;
   };
   /// The kind of a data slot as the model declares it (Int also for strings and externs).
